@@ -1,0 +1,18 @@
+#pragma once
+// Each sub-command of the `shadowlab` executable lives in its own cmd_*.cpp and registers itself
+// on the CLI11 app. A failing command prints one clear message to stderr and throws
+// CLI::RuntimeError(code), which main turns into the process exit code.
+namespace CLI {
+class App;
+}
+
+namespace shadowlab::app {
+
+void addInfoCommand(CLI::App& app);      // shadowlab info SCENE
+void addRenderCommand(CLI::App& app);    // shadowlab render SCENE --out FILE.png
+void addStressCommand(CLI::App& app);    // shadowlab stress --cases N --seed S
+void addGenerateCommand(CLI::App& app);  // shadowlab generate NAME --out FILE.glb
+// The viewer is the top-level command (`shadowlab [SCENE]`); it runs when no sub-command is given.
+void addViewerOptions(CLI::App& app);
+
+}  // namespace shadowlab::app

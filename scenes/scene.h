@@ -1,0 +1,151 @@
+#pragma once
+// The project's own scene model: what the loader fills, what the renderer uploads and what the
+// shadow math reads bounds from. GL-free and tinygltf-free, so every layer can see it.
+#include "math/aabb.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+// One triangle list (strips and fans are converted by the loader), de-indexed attributes
+// already decoded to float (sparse accessors applied, normalized integers scaled).
+struct Primitive {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;    // always filled: computed (area-weighted) when the file has none
+    std::vector<glm::vec2> texcoords;  // TEXCOORD_0, empty when the file has none
+    std::vector<std::uint32_t> indices;  // triangle list, always indexed (non-indexed input gets 0..n-1)
+    int material = -1;                   // index into Scene::materials; -1 = default material
+    Aabb bounds;                         // object space
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Primitive> primitives;
+};
+
+// Values are the glTF / OpenGL enums (9728 NEAREST, 9729 LINEAR, 10497 REPEAT, ...).
+struct Sampler {
+    int magFilter = 9729;
+    int minFilter = 9987;  // LINEAR_MIPMAP_LINEAR
+    int wrapS = 10497;
+    int wrapT = 10497;
+    bool operator==(const Sampler&) const = default;
+};
+
+struct Texture {
+    std::string name;
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba8;  // decoded, 4 channels, sRGB-encoded colour
+    Sampler sampler;
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};  // linear
+    int baseColorTexture = -1;        // index into Scene::textures
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    glm::vec3 emissiveFactor{0.0f};
+};
+
+enum class LightType { Directional, Spot, Point };
+
+// A KHR_lights_punctual light placed in the world by its node.
+struct Light {
+    std::string name;
+    LightType type = LightType::Directional;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;  // 0 = unlimited
+    float innerConeAngle = 0.0f;               // radians (spot)
+    float outerConeAngle = 0.7853981633974483f;  // radians (spot), glTF default pi/4
+    glm::dvec3 position{0.0};                  // world
+    glm::dvec3 direction{0.0, -1.0, 0.0};      // world, the way the light travels (node's -Z)
+    int node = -1;                             // -1 for the default sun
+};
+
+// A perspective (or orthographic) glTF camera placed by its node.
+struct Camera {
+    std::string name;
+    bool orthographic = false;
+    float yfov = 0.8f;        // radians
+    float aspectRatio = 0.0f;  // 0 = use the viewport's
+    float znear = 0.1f;
+    float zfar = 0.0f;  // 0 = infinite in glTF; the loader replaces it with a finite value from the bounds
+    float xmag = 1.0f, ymag = 1.0f;  // orthographic half extents
+    glm::dmat4 cameraToWorld{1.0};   // camera looks down its -Z
+    int node = -1;                   // -1 for the framing camera
+};
+
+struct Node {
+    std::string name;
+    int parent = -1;
+    std::vector<int> children;
+    // Local transform: the glTF matrix if given, else T*R*S of the fields below (kept for animation).
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    bool hasMatrix = false;
+    glm::dmat4 matrix{1.0};
+    glm::dmat4 world{1.0};
+    int mesh = -1;
+    int camera = -1;  // index into Scene::cameras
+    int light = -1;   // index into Scene::lights
+};
+
+// One mesh drawn at one node (a mesh referenced by n nodes gives n instances).
+struct MeshInstance {
+    int node = -1;
+    int mesh = -1;
+    glm::dmat4 world{1.0};
+    Aabb worldBounds;
+    bool mirrored = false;  // det(world) < 0: winding flips (matters for culling in the shadow pass)
+};
+
+enum class AnimationPath { Translation, Rotation, Scale };
+enum class Interpolation { Linear, Step, CubicSpline };
+
+struct AnimationChannel {
+    int node = -1;
+    AnimationPath path = AnimationPath::Translation;
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<float> times;
+    std::vector<glm::vec4> values;  // vec3 in xyz for T/S, quaternion xyzw for R; 3 per key for cubic spline
+};
+
+struct Animation {
+    std::string name;
+    std::vector<AnimationChannel> channels;
+    float duration = 0.0f;
+};
+
+struct Scene {
+    std::string source;  // file it came from
+    std::vector<Node> nodes;
+    std::vector<int> roots;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+    std::vector<MeshInstance> instances;
+    std::vector<Animation> animations;
+    Aabb bounds;  // world, over all instances
+    bool defaultLight = false;   // no light in the file: a sun was added
+    bool defaultCamera = false;  // no camera in the file: a framing camera was added
+    std::vector<std::string> warnings;
+
+    std::size_t triangleCount() const;  // drawn triangles, per instance
+};
+
+}  // namespace shadowlab
