@@ -1,0 +1,31 @@
+#pragma once
+// What `render` and the viewer share: loading a scene with its messages, and the settings a
+// scene starts with (its first camera, then --view JSON, then --method and --set overrides).
+#include "scenes/scene.h"
+#include "settings/settings.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab::app {
+
+std::string defaultScenePath();
+
+// Loads SCENE; on failure prints "shadowlab: <file>: <reason>" and returns nullopt.
+std::optional<Scene> loadSceneReporting(const std::string& file);
+
+// Settings for the first view of a scene: the first glTF camera (or the framing camera).
+Settings initialSettings(const Scene& scene);
+
+struct SettingsOverrides {
+    std::string viewFile;              // --view VIEW.json
+    std::string method;                // --method
+    std::vector<std::string> sets;     // --set key=value
+};
+// Applies the overrides in that order; false with `error` on a bad file/key/value.
+bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error);
+
+bool readTextFile(const std::string& file, std::string& text, std::string& error);
+
+}  // namespace shadowlab::app

@@ -1,0 +1,119 @@
+#include "frame_setup.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+glm::dvec3 cameraForward(const CameraSettings& camera) {
+    const double yaw = glm::radians(camera.yawDeg), pitch = glm::radians(camera.pitchDeg);
+    return {std::cos(pitch) * std::cos(yaw), std::sin(pitch), std::cos(pitch) * std::sin(yaw)};
+}
+
+ViewFrustum viewFrustum(const CameraSettings& camera, double aspect) {
+    ViewFrustum v;
+    v.eye = camera.position;
+    v.forward = cameraForward(camera);
+    v.up = {0.0, 1.0, 0.0};
+    v.fovY = glm::radians(camera.fovYDeg);
+    v.aspect = aspect > 0.0 ? aspect : 1.0;
+    v.zNear = camera.nearPlane;
+    v.zFar = camera.farPlane;
+    return v;
+}
+
+CameraSettings cameraFromScene(const Camera& camera, const CameraSettings& base) {
+    CameraSettings out = base;
+    out.position = glm::dvec3(camera.cameraToWorld[3]);
+    glm::dvec3 forward = -glm::dvec3(camera.cameraToWorld[2]);
+    const double len = glm::length(forward);
+    forward = len > 0.0 && std::isfinite(len) ? forward / len : glm::dvec3(0, 0, -1);
+    out.pitchDeg = glm::degrees(std::asin(std::clamp(forward.y, -1.0, 1.0)));
+    out.yawDeg = glm::degrees(std::atan2(forward.z, forward.x));
+    if (!camera.orthographic) out.fovYDeg = glm::degrees(double(camera.yfov));
+    out.nearPlane = camera.znear > 0.0f ? camera.znear : base.nearPlane;
+    out.farPlane = camera.zfar > camera.znear ? camera.zfar : std::max(base.farPlane, out.nearPlane * 1000.0);
+    return out;
+}
+
+namespace {
+
+glm::dvec3 directionFromAngles(double azimuthDeg, double elevationDeg) {
+    // Azimuth/elevation say where the light comes FROM; the light travels the other way.
+    const double az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+    const glm::dvec3 towardsLight{std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
+    return -towardsLight;
+}
+
+}  // namespace
+
+LightFrame resolveLight(const Scene& scene, const LightSettings& settings, double seconds) {
+    LightFrame frame;
+    frame.radiance = settings.color * settings.intensity;
+    if (settings.source == LightSource::Scene && settings.sceneLight < int(scene.lights.size())) {
+        const Light& l = scene.lights[std::size_t(settings.sceneLight)];
+        frame.type = l.type;
+        frame.name = l.name;
+        frame.direction = glm::length(l.direction) > 0.0 ? glm::normalize(l.direction) : glm::dvec3(0, -1, 0);
+        frame.position = l.position;
+        // glTF intensities are photometric (lux, candela); the viewer shows relative radiance, so
+        // the colour is kept and the brightness comes from the settings.
+        frame.radiance = glm::dvec3(l.color) * settings.intensity;
+        frame.outerConeAngle = l.outerConeAngle;
+        frame.cosOuter = std::cos(double(l.outerConeAngle));
+        frame.cosInner = std::cos(double(std::min(l.innerConeAngle, l.outerConeAngle * 0.999f)));
+        frame.range = l.range;
+    } else if (settings.source == LightSource::Spot) {
+        frame.type = LightType::Spot;
+        frame.name = "Spot (settings)";
+        frame.position = settings.spotPosition;
+        frame.direction = directionFromAngles(settings.azimuthDeg, settings.elevationDeg);
+        frame.outerConeAngle = glm::radians(settings.spotOuterConeDeg);
+        frame.cosOuter = std::cos(frame.outerConeAngle);
+        frame.cosInner = std::cos(frame.outerConeAngle * 0.8);
+        frame.range = settings.spotRange;
+    } else {
+        frame.type = LightType::Directional;
+        frame.name = "Sun (settings)";
+        const double azimuth = settings.azimuthDeg + (settings.animateSun ? seconds * settings.sunDegreesPerSecond : 0.0);
+        frame.direction = directionFromAngles(azimuth, settings.elevationDeg);
+    }
+    if (frame.type == LightType::Point) {
+        frame.castsShadow = false;
+        frame.note = "'" + frame.name + "' is a point light: lit, but omnidirectional shadows are not supported";
+    }
+    return frame;
+}
+
+ShadowLight shadowLight(const LightFrame& light) {
+    ShadowLight s;
+    s.kind = light.type == LightType::Spot ? ShadowLightKind::Spot : ShadowLightKind::Directional;
+    s.direction = light.direction;
+    s.position = light.position;
+    s.outerConeAngle = light.outerConeAngle;
+    s.range = light.range;
+    return s;
+}
+
+ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, const Aabb& sceneBounds) {
+    ShadowParams p;
+    p.method = settings.method;
+    p.lispsm.useBodyVector = settings.lispsm.useBodyVector;
+    p.lispsm.overrideN = settings.lispsm.overrideN;
+    p.lispsm.n = settings.lispsm.n;
+    if (settings.lispsm.autoVirtualFar) {
+        // Thesis 9.2.5: z_f = the farthest visible depth. The farthest scene point in front of
+        // the camera bounds it (cheap and conservative; a depth read-back would be exact).
+        double farthest = 0.0;
+        for (int i = 0; i < 8 && !sceneBounds.empty(); ++i)
+            farthest = std::max(farthest, glm::dot(sceneBounds.corner(i) - view.eye, view.forward));
+        p.lispsm.virtualFar = std::clamp(farthest, view.zNear * 1.001, view.zFar);
+    } else {
+        p.lispsm.virtualFar = settings.lispsm.virtualFar;
+    }
+    return p;
+}
+
+}  // namespace shadowlab

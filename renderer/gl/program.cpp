@@ -1,0 +1,64 @@
+#include "gl/program.h"
+
+#include "shader_sources.h"
+
+namespace shadowlab::gl {
+namespace {
+
+ShaderHandle compile(GLenum stage, std::string_view file, std::string_view defines, std::string& error) {
+    std::string source = shaders::expandedSource(file, defines, error);
+    if (source.empty()) return {};
+    ShaderHandle shader(glCreateShader(stage));
+    const char* text = source.c_str();
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+        glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
+        error = "compiling shader '" + std::string(file) + "' failed:\n" + log;
+        return {};
+    }
+    return shader;
+}
+
+}  // namespace
+
+std::optional<Program> Program::build(std::string_view vertexFile, std::string_view fragmentFile,
+                                      std::string_view defines, std::string& error) {
+    ShaderHandle vertex = compile(GL_VERTEX_SHADER, vertexFile, defines, error);
+    if (!vertex) return std::nullopt;
+    ShaderHandle fragment = compile(GL_FRAGMENT_SHADER, fragmentFile, defines, error);
+    if (!fragment) return std::nullopt;
+    Program program;
+    program.handle_ = ProgramHandle(glCreateProgram());
+    glAttachShader(program.id(), vertex.id());
+    glAttachShader(program.id(), fragment.id());
+    glLinkProgram(program.id());
+    glDetachShader(program.id(), vertex.id());
+    glDetachShader(program.id(), fragment.id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+        error = "linking '" + std::string(vertexFile) + "' + '" + std::string(fragmentFile) + "' failed:\n" + log;
+        return std::nullopt;
+    }
+    return program;
+}
+
+GLint Program::location(const std::string& name) const {
+    auto it = locations_.find(name);
+    if (it != locations_.end()) return it->second;
+    GLint loc = glGetUniformLocation(id(), name.c_str());
+    locations_.emplace(name, loc);
+    return loc;  // -1 (optimised away) is a valid no-op target for glProgramUniform*
+}
+
+}  // namespace shadowlab::gl

@@ -1,0 +1,137 @@
+#include "gpu_scene.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <cmath>
+
+namespace shadowlab {
+namespace {
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 texcoord;
+};
+
+// Per-instance attributes: world matrix and the normal matrix (inverse transpose), 3 vec4 columns.
+struct InstanceData {
+    glm::mat4 world;
+    glm::vec4 normalColumns[3];
+};
+
+InstanceData instanceData(const MeshInstance& instance) {
+    InstanceData d{};
+    d.world = glm::mat4(instance.world);
+    glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(d.world));
+    for (int c = 0; c < 3; ++c) d.normalColumns[c] = glm::vec4(normalMatrix[c], 0.0f);
+    return d;
+}
+
+bool mipmapped(int minFilter) { return minFilter >= 9984 && minFilter <= 9987; }
+
+// glTF wrap modes are GL enums; anything else in a file falls back to REPEAT (glTF's default).
+GLint validWrap(int wrap) {
+    return wrap == GL_CLAMP_TO_EDGE || wrap == GL_MIRRORED_REPEAT || wrap == GL_REPEAT ? wrap : GL_REPEAT;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene) {
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    meshes_.resize(scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        for (const Primitive& p : scene.meshes[m].primitives) {
+            GpuPrimitive gp;
+            gp.baseVertex = GLint(vertices.size());
+            gp.firstIndex = GLuint(indices.size());
+            gp.indexCount = GLsizei(p.indices.size());
+            gp.material = p.material;
+            for (std::size_t v = 0; v < p.positions.size(); ++v) {
+                Vertex vx{p.positions[v], v < p.normals.size() ? p.normals[v] : glm::vec3(0, 1, 0),
+                          v < p.texcoords.size() ? p.texcoords[v] : glm::vec2(0)};
+                vertices.push_back(vx);
+            }
+            indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+            meshes_[m].primitives.push_back(gp);
+        }
+    }
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const int mesh = scene.instances[i].mesh;
+        if (mesh >= 0 && mesh < int(meshes_.size())) meshes_[mesh].instances.push_back(int(i));
+    }
+    GLuint slot = 0;
+    for (GpuMesh& mesh : meshes_) {
+        mesh.firstSlot = slot;
+        slot += GLuint(mesh.instances.size());
+        std::size_t tris = 0;
+        for (const GpuPrimitive& p : mesh.primitives) tris += std::size_t(p.indexCount / 3);
+        triangles_ += tris * mesh.instances.size();
+    }
+
+    vertices_ = gl::createBuffer();
+    glNamedBufferStorage(vertices_.id(), GLsizeiptr(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
+                         vertices.empty() ? nullptr : vertices.data(), 0);
+    indices_ = gl::createBuffer();
+    glNamedBufferStorage(indices_.id(), GLsizeiptr(std::max<std::size_t>(1, indices.size()) * sizeof(std::uint32_t)),
+                         indices.empty() ? nullptr : indices.data(), 0);
+    instanceData_ = gl::createBuffer();
+    glNamedBufferStorage(instanceData_.id(), GLsizeiptr(std::max<GLuint>(1, slot) * sizeof(InstanceData)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    updateInstances(scene);
+
+    vao_ = gl::createVertexArray();
+    const GLuint vao = vao_.id();
+    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, indices_.id());
+    const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, texcoord)};
+    const GLint sizes[3] = {3, 3, 2};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(vao, a, 0);
+    }
+    glVertexArrayVertexBuffer(vao, 1, instanceData_.id(), 0, sizeof(InstanceData));
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    for (GLuint a = 0; a < 7; ++a) {  // 4 world columns + 3 normal-matrix columns
+        glEnableVertexArrayAttrib(vao, 3 + a);
+        glVertexArrayAttribFormat(vao, 3 + a, a < 4 ? 4 : 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
+        glVertexArrayAttribBinding(vao, 3 + a, 1);
+    }
+
+    for (const Texture& t : scene.textures) {
+        gl::Texture tex = gl::createTexture(GL_TEXTURE_2D);
+        if (t.width > 0 && t.height > 0 && t.rgba8.size() >= std::size_t(t.width) * t.height * 4) {
+            const int levels = 1 + int(std::floor(std::log2(double(std::max(t.width, t.height)))));
+            glTextureStorage2D(tex.id(), levels, GL_SRGB8_ALPHA8, t.width, t.height);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTextureSubImage2D(tex.id(), 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba8.data());
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            glGenerateTextureMipmap(tex.id());
+        } else {  // an unusable image: 1x1 white, so the material's factor still shows
+            const std::uint8_t white[4] = {255, 255, 255, 255};
+            glTextureStorage2D(tex.id(), 1, GL_SRGB8_ALPHA8, 1, 1);
+            glTextureSubImage2D(tex.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+        }
+        textures_.push_back(std::move(tex));
+        gl::SamplerObject sampler = gl::createSampler();
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, t.sampler.magFilter == 9728 ? GL_NEAREST : GL_LINEAR);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER,
+                            mipmapped(t.sampler.minFilter) || t.sampler.minFilter == 9728 || t.sampler.minFilter == 9729
+                                ? t.sampler.minFilter
+                                : GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, validWrap(t.sampler.wrapS));
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, validWrap(t.sampler.wrapT));
+        samplers_.push_back(std::move(sampler));
+    }
+}
+
+void GpuScene::updateInstances(const Scene& scene) {
+    std::vector<InstanceData> data;
+    for (const GpuMesh& mesh : meshes_)
+        for (int inst : mesh.instances) data.push_back(instanceData(scene.instances[inst]));
+    if (!data.empty())
+        glNamedBufferSubData(instanceData_.id(), 0, GLsizeiptr(data.size() * sizeof(InstanceData)), data.data());
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,131 @@
+#pragma once
+// The one contract between UI, renderer, CLI (--set key=value, --view VIEW.json), benchmarks and
+// tests: every parameter the viewer exposes lives here, with defaults, equality and JSON.
+// GL-free and ImGui-free.
+#include "math/shadow_setup.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadowlab {
+
+// Thesis ch. 5, Fig. 5.6: depth distribution x offset, plus back-face rendering.
+enum class DepthDistribution { Hyperbolic, Linear };
+enum class DepthOffset { None, Constant, SlopeScale };
+enum class ShadowFilter { Nearest, Pcf2x2Hardware, Pcf3x3, Pcf4x4 };
+enum class ViewMode { Lit, ShadowTermOnly };  // thesis Fig. 6.5: unlit, unicoloured geometry
+enum class LightSource { Scene, Sun, Spot };   // a glTF light, or a light set by azimuth/elevation
+
+struct CameraSettings {
+    glm::dvec3 position{0.0, 2.0, 10.0};
+    double yawDeg = -90.0;   // 0 looks along +X, -90 along -Z
+    double pitchDeg = 0.0;   // positive looks up
+    double fovYDeg = 60.0;
+    double nearPlane = 0.1;
+    double farPlane = 70.0;
+    double moveSpeed = 5.0;  // m/s for the fly camera
+    bool operator==(const CameraSettings&) const = default;
+};
+
+struct LightSettings {
+    LightSource source = LightSource::Scene;
+    int sceneLight = 0;          // index into the scene's lights when source == Scene
+    double azimuthDeg = 30.0;    // Sun/Spot: direction the light comes FROM, around +Y, 0 = from +X
+    double elevationDeg = 45.0;  // above the horizon
+    glm::dvec3 spotPosition{0.0, 10.0, 0.0};
+    double spotOuterConeDeg = 40.0;  // half-angle
+    double spotRange = 0.0;          // 0 = up to the scene bounds
+    glm::dvec3 color{1.0, 0.96, 0.9};
+    double intensity = 3.0;
+    double ambient = 0.15;  // global ambient, never shadowed (thesis 6.2)
+    bool animateSun = false;
+    double sunDegreesPerSecond = 10.0;
+    bool operator==(const LightSettings&) const = default;
+};
+
+struct LispsmSettings {
+    bool autoVirtualFar = true;   // z_f = farthest visible depth (thesis 9.2.5)
+    double virtualFar = 0.0;      // used when !autoVirtualFar; <= 0 means the real far plane
+    bool useBodyVector = false;   // thesis 9.2.6
+    bool overrideN = false;
+    double n = 1.0;
+    bool operator==(const LispsmSettings&) const = default;
+};
+
+struct BiasSettings {
+    DepthDistribution distribution = DepthDistribution::Hyperbolic;
+    DepthOffset mode = DepthOffset::SlopeScale;
+    double constant = 0.0005;      // depth units added in the compare (mode == Constant)
+    double slopeFactor = 2.0;      // glPolygonOffset factor (paper defaults 2.0 / 4.0)
+    double slopeUnits = 4.0;       // glPolygonOffset units
+    bool backFaces = false;        // render back faces into the shadow map (front faces culled)
+    bool operator==(const BiasSettings&) const = default;
+};
+
+struct FilterSettings {
+    ShadowFilter filter = ShadowFilter::Pcf2x2Hardware;
+    int blurIterations = 0;          // eye-space blur passes (thesis 6.3, 9.4.2); 0 = none
+    bool depthDependentBlur = false;  // wider kernel near the viewer
+    double blurStrength = 1.0;
+    bool operator==(const FilterSettings&) const = default;
+};
+
+struct OverlaySettings {
+    bool shadowMapInset = false;
+    bool lightViewInset = false;
+    bool observerInset = false;
+    bool drawB = true;
+    bool drawV = true;
+    bool drawS = true;
+    bool drawP = true;
+    bool operator==(const OverlaySettings&) const = default;
+};
+
+struct CompareSettings {
+    int count = 1;  // 1 = no split; 2 or 3 views side by side
+    std::vector<ShadowMethod> methods{ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm};
+    bool operator==(const CompareSettings&) const = default;
+};
+
+struct AnimationSettings {
+    bool playing = true;
+    double time = 0.0;  // seconds
+    double speed = 1.0;
+    bool operator==(const AnimationSettings&) const = default;
+};
+
+struct Settings {
+    ShadowMethod method = ShadowMethod::Lispsm;
+    int shadowMapSize = 2048;  // 256..8192
+    bool shadows = true;
+    ViewMode viewMode = ViewMode::Lit;
+    CameraSettings camera;
+    LightSettings light;
+    LispsmSettings lispsm;
+    BiasSettings bias;
+    FilterSettings filter;
+    OverlaySettings overlays;
+    CompareSettings compare;
+    AnimationSettings animation;
+    bool operator==(const Settings&) const = default;
+};
+
+// Brings every value into its valid range (absurd parameters are clamped, NaN replaced by the
+// default); returns one line per value it changed.
+std::vector<std::string> sanitize(Settings& settings);
+
+std::string toJsonText(const Settings& settings);
+// Unknown keys and wrong types are errors (settings untouched); missing keys keep their current value.
+bool fromJsonText(std::string_view text, Settings& settings, std::string& error);
+// `--set bias.mode=slope` style: key is the JSON path, value parsed to the type found there.
+bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& error);
+// Every valid key with its current value, for --help and error messages.
+std::vector<std::string> settingKeys(const Settings& settings);
+
+const char* methodName(ShadowMethod method);  // "ssm", "ssm-unfocused", "psm", "lispsm"
+bool parseMethod(std::string_view name, ShadowMethod& method);
+
+}  // namespace shadowlab
