@@ -1,6 +1,8 @@
 #pragma once
 // What a frame reports back: per-pass CPU/GPU time and counts. Plain data (GL-free), read by the
 // UI and by tests.
+#include "math/shadow_setup.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -21,6 +23,7 @@ struct FrameStats {
     std::size_t castersCulled = 0;
     int shadowMapSize = 0;
     std::string lightNote;  // e.g. a point light, lit without shadows
+    ShadowDiagnostics shadow;  // B, V, S, P, n, gamma ... of this frame (empty when unshadowed)
 };
 
 }  // namespace shadowlab

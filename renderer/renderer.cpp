@@ -1,6 +1,8 @@
 #include "renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace shadowlab {
 
@@ -9,8 +11,40 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-// Culling for one draw run: front faces are counter-clockwise unless the instance mirrors space.
-void setWinding(bool mirrored) { glFrontFace(mirrored ? GL_CW : GL_CCW); }
+// Linear light-space depth (thesis ch. 5, TSM): along the light direction for a sun, radial for a
+// spot, over the depth range of the whole scene so every caster fits.
+struct LinearDepthRange {
+    bool radial = false;
+    glm::dvec3 origin{0.0};
+    glm::dvec3 axis{0.0, -1.0, 0.0};
+    glm::dvec2 range{0.0, 1.0};
+};
+
+LinearDepthRange linearDepthRange(const LightFrame& light, const Aabb& bounds) {
+    LinearDepthRange r;
+    r.radial = light.type != LightType::Directional;
+    r.axis = light.direction;
+    r.origin = r.radial ? light.position : (bounds.empty() ? glm::dvec3(0.0) : bounds.center());
+    double lo = 0.0, hi = 0.0;
+    for (int i = 0; i < 8 && !bounds.empty(); ++i) {
+        const glm::dvec3 c = bounds.corner(i);
+        const double t = r.radial ? glm::distance(c, r.origin) : glm::dot(c - r.origin, r.axis);
+        lo = i == 0 && !r.radial ? t : std::min(lo, t);
+        hi = std::max(hi, t);
+    }
+    const double pad = std::max(1e-6, (hi - lo) * 1e-3);
+    r.range = {lo - pad, hi + pad};
+    return r;
+}
+
+// Inverted lights may come with a matrix whose w is negative over B; (-M) is the same projective
+// map with w > 0, which GL's clipping needs.
+glm::dmat4 withPositiveW(const glm::dmat4& m, const ShadowDiagnostics& d) {
+    double wSum = 0.0;
+    for (const auto& face : d.bodyB)
+        for (const glm::dvec3& p : face) wSum += (m * glm::dvec4(p, 1.0)).w;
+    return wSum < 0.0 ? -m : m;
+}
 
 }  // namespace
 
@@ -21,13 +55,27 @@ struct Renderer::Frame {
     ViewFrustum view;
     glm::dmat4 viewProjection;
     LightFrame light;
+    bool shadowed = false;  // a shadow map is rendered and looked up this frame
+    ShadowSetup shadow;
+    glm::dmat4 worldToShadowClip{1.0};
+    bool linearDepth = false;
+    bool reversedDepth = false;
+    LinearDepthRange linear;
+    InstanceMask casters;
 };
 
 std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     std::unique_ptr<Renderer> r(new Renderer());
     auto forward = gl::Program::build("forward.vert", "forward.frag", "", error);
     if (!forward) return nullptr;
+    auto depth = gl::Program::build("shadow_depth.vert", "shadow_depth.frag", "", error);
+    if (!depth) return nullptr;
+    auto blur = gl::Program::build("fullscreen.vert", "blur.frag", "", error);
+    if (!blur) return nullptr;
     r->forward_ = std::move(*forward);
+    r->shadowDepth_ = std::move(*depth);
+    r->blur_ = std::move(*blur);
+    r->emptyVao_ = gl::createVertexArray();
     return r;
 }
 
@@ -37,9 +85,55 @@ void Renderer::updateInstances(const Scene& scene) {
     if (gpuScene_) gpuScene_->updateInstances(scene);
 }
 
-void Renderer::resolveTimings() { forwardTimer_.resolveBlocking(); }
+void Renderer::resolveTimings() {
+    for (GpuTimer* t : {&shadowTimer_, &termTimer_, &blurTimer_, &forwardTimer_}) t->resolveBlocking();
+}
 
-void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int materialIndex) const {
+FrameStats Renderer::render(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport) {
+    FrameStats stats;
+    const auto setupStart = Clock::now();
+    const double aspect = viewport.height > 0 ? double(viewport.width) / viewport.height : 1.0;
+    const ViewFrustum view = viewFrustum(settings.camera, aspect);
+    Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(),
+                resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}};
+    stats.lightNote = frame.light.note;
+    if (!gpuScene_) return stats;
+
+    if (settings.shadows && frame.light.castsShadow) {
+        frame.shadow = computeShadowSetup(view, shadowLight(frame.light), scene.bounds,
+                                          shadowParams(settings, view, scene.bounds));
+        stats.shadow = frame.shadow.diagnostics;
+        lastSetup_ = frame.shadow;
+        frame.shadowed = frame.shadow.valid;
+    }
+    if (frame.shadowed) {
+        frame.worldToShadowClip = withPositiveW(frame.shadow.worldToShadowClip, frame.shadow.diagnostics);
+        frame.linearDepth = settings.bias.distribution == DepthDistribution::Linear;
+        // Linear depth grows away from the light whatever the warp, so it never needs reversing.
+        frame.reversedDepth = frame.shadow.reverseDepthTest && !frame.linearDepth;
+        frame.linear = linearDepthRange(frame.light, scene.bounds);
+        frame.casters.assign(scene.instances.size(), 0);
+        for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+            const bool reaches = casterCanReach(frame.shadow, scene.instances[i].worldBounds);
+            frame.casters[i] = reaches ? 1 : 0;
+            ++(reaches ? stats.castersDrawn : stats.castersCulled);
+        }
+    }
+    stats.passes.push_back({"shadow setup (CPU)", msSince(setupStart), 0.0});
+
+    if (frame.shadowed) shadowPass(frame, stats);
+    const bool blur = frame.shadowed && settings.filter.blurIterations > 0;
+    if (blur) {
+        shadowTermPass(frame, stats);
+        blurPasses(frame, stats);
+    } else {
+        termTargets_.release();  // N = 0 keeps nothing extra allocated
+    }
+    forwardPass(frame, stats);
+    return stats;
+}
+
+void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cull) const {
     static const Material kDefault{};
     const Material& m = materialIndex >= 0 && materialIndex < int(scene.materials.size())
                             ? scene.materials[std::size_t(materialIndex)]
@@ -52,20 +146,183 @@ void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int m
     program.set("uAlphaMode", int(m.alphaMode));
     program.set("uAlphaCutoff", m.alphaCutoff);
     program.set("uEmissive", m.emissiveFactor);
-    if (m.doubleSided) glDisable(GL_CULL_FACE);
-    else glEnable(GL_CULL_FACE);
+    // Double-sided surfaces are drawn from both sides in every pass.
+    if (cull && !m.doubleSided) glEnable(GL_CULL_FACE);
+    else glDisable(GL_CULL_FACE);
 }
 
-FrameStats Renderer::render(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport) {
-    FrameStats stats;
-    const double aspect = viewport.height > 0 ? double(viewport.width) / viewport.height : 1.0;
-    const ViewFrustum view = viewFrustum(settings.camera, aspect);
-    Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(),
-                resolveLight(scene, settings.light, seconds)};
-    stats.lightNote = frame.light.note;
-    if (!gpuScene_) return stats;
-    forwardPass(frame, stats);
-    return stats;
+void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
+                         FrameStats& stats) const {
+    const Scene& scene = frame.scene;
+    gpuScene_->bindVertexArray();
+    glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
+    gpuScene_->forEachRun(scene, mask, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
+        setMaterial(program, scene, prim.material, true);
+        glFrontFace(mirrored ? GL_CW : GL_CCW);  // a negative-scale node flips the winding
+        glDrawElementsInstancedBaseVertexBaseInstance(
+            GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
+            prim.baseVertex, firstSlot);
+        ++stats.drawCalls;
+        stats.trianglesDrawn += std::size_t(prim.indexCount / 3) * std::size_t(count);
+    });
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    glDisable(GL_CULL_FACE);
+}
+
+void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
+    const auto cpuStart = Clock::now();
+    shadowTimer_.begin();
+    const Settings& s = frame.settings;
+    shadowMap_.ensure(s.shadowMapSize);
+    stats.shadowMapSize = shadowMap_.size();
+    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer());
+    glViewport(0, 0, shadowMap_.size(), shadowMap_.size());
+    // Inverted PSM lights store the far side as larger depth: clear to 0 and keep the greater.
+    const GLfloat clearDepth = frame.reversedDepth ? 0.0f : 1.0f;
+    glDepthMask(GL_TRUE);
+    glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(frame.reversedDepth ? GL_GREATER : GL_LESS);
+    // Casters in front of the focused near plane still cast: clamp them onto it ("pancaking").
+    glEnable(GL_DEPTH_CLAMP);
+    if (s.bias.mode == DepthOffset::SlopeScale) {
+        // Thesis eq. 5.2: bias = factor * dz + r * units, pushed away from the light.
+        const float sign = frame.reversedDepth ? -1.0f : 1.0f;
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(sign * float(s.bias.slopeFactor), sign * float(s.bias.slopeUnits));
+    }
+
+    const gl::Program& program = shadowDepth_;
+    program.use();
+    program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
+    program.set("uLinearDepth", frame.linearDepth ? 1 : 0);
+    program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
+    program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
+    program.set("uLinearAxis", glm::vec3(frame.linear.axis));
+    program.set("uLinearRange", glm::vec2(frame.linear.range));
+    FrameStats drawStats;
+    // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
+    drawScene(program, frame, frame.casters, s.bias.backFaces, drawStats);
+    stats.drawCalls += drawStats.drawCalls;
+
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0.0f, 0.0f);
+    glDisable(GL_DEPTH_CLAMP);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, 0);
+    glBindSampler(0, 0);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    shadowTimer_.end();
+    stats.passes.push_back({"shadow map", msSince(cpuStart), shadowTimer_.lastMs()});
+}
+
+void Renderer::setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const {
+    const Settings& s = frame.settings;
+    program.set("uViewProjection", glm::mat4(frame.viewProjection));
+    program.set("uCameraPosition", glm::vec3(frame.view.eye));
+    const LightFrame& light = frame.light;
+    program.set("uLightType", int(light.type));
+    program.set("uLightDirection", glm::vec3(light.direction));
+    program.set("uLightPosition", glm::vec3(light.position));
+    program.set("uLightColor", glm::vec3(light.radiance));
+    program.set("uLightCosOuter", float(light.cosOuter));
+    program.set("uLightCosInner", float(light.cosInner));
+    program.set("uLightRange", float(light.range));
+    program.set("uAmbient", float(s.light.ambient));
+
+    program.set("uShadowsEnabled", frame.shadowed ? 1 : 0);
+    program.set("uUseBlurredTerm", useBlurredTerm ? 1 : 0);
+    glProgramUniform2i(program.id(), program.location("uViewportOrigin"), frame.viewport.x, frame.viewport.y);
+    if (!frame.shadowed) return;
+    program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
+    program.set("uReverseDepth", frame.reversedDepth ? 1 : 0);
+    program.set("uLinearDepth", frame.linearDepth ? 1 : 0);
+    program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
+    program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
+    program.set("uLinearAxis", glm::vec3(frame.linear.axis));
+    program.set("uLinearRange", glm::vec2(frame.linear.range));
+    program.set("uShadowFilter", int(s.filter.filter));
+    program.set("uConstantOffset", s.bias.mode == DepthOffset::Constant ? float(s.bias.constant) : 0.0f);
+    program.set("uShadowTexel", glm::vec2(1.0f / float(shadowMap_.size())));
+    glBindTextureUnit(1, shadowMap_.texture());
+    glBindSampler(1, shadowMap_.sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware, frame.reversedDepth));
+}
+
+void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
+    // Thesis 9.4.2: the PCF shadow term of the visible surfaces, written to a screen-sized texture.
+    const auto cpuStart = Clock::now();
+    termTimer_.begin();
+    const Viewport& vp = frame.viewport;
+    termTargets_.ensure(vp.width, vp.height);
+    glBindFramebuffer(GL_FRAMEBUFFER, termTargets_.framebuffer(0));
+    glViewport(0, 0, vp.width, vp.height);
+    const GLfloat lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const GLfloat farDepth = 1.0f;
+    glClearBufferfv(GL_COLOR, 0, lit);
+    glDepthMask(GL_TRUE);
+    glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    const gl::Program& program = forward_;
+    program.use();
+    Frame termFrame = frame;
+    termFrame.viewport = Viewport{termTargets_.framebuffer(0), 0, 0, vp.width, vp.height};
+    setLightingUniforms(program, termFrame, false);
+    program.set("uOutputMode", 2);
+    drawScene(program, frame, {}, false, stats);
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, 0);
+    glBindSampler(0, 0);
+    glBindTextureUnit(1, 0);
+    glBindSampler(1, 0);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    termTimer_.end();
+    stats.passes.push_back({"shadow term", msSince(cpuStart), termTimer_.lastMs()});
+}
+
+void Renderer::blurPasses(const Frame& frame, FrameStats& stats) {
+    const auto cpuStart = Clock::now();
+    blurTimer_.begin();
+    const Settings& s = frame.settings;
+    const Viewport& vp = frame.viewport;
+    const gl::Program& program = blur_;
+    program.use();
+    program.set("uStrength", float(s.filter.blurStrength));
+    program.set("uDepthDependent", s.filter.depthDependentBlur ? 1 : 0);
+    program.set("uNearFar", glm::vec2(float(frame.view.zNear), float(frame.view.zFar)));
+    glBindVertexArray(emptyVao_.id());
+    glViewport(0, 0, vp.width, vp.height);
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(1, termTargets_.depth());
+    glBindSampler(1, termTargets_.linearClampSampler());
+    // Each iteration: horizontal (0 -> 1) then vertical (1 -> 0), so the result ends in texture 0.
+    for (int i = 0; i < s.filter.blurIterations; ++i) {
+        for (int direction = 0; direction < 2; ++direction) {
+            glBindFramebuffer(GL_FRAMEBUFFER, termTargets_.framebuffer(1 - direction));
+            glBindTextureUnit(0, termTargets_.term(direction));
+            glBindSampler(0, termTargets_.linearClampSampler());
+            program.set("uDirection", direction == 0 ? glm::vec2(1.0f / float(vp.width), 0.0f)
+                                                     : glm::vec2(0.0f, 1.0f / float(vp.height)));
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            ++stats.drawCalls;
+        }
+    }
+    glBindTextureUnit(0, 0);
+    glBindSampler(0, 0);
+    glBindTextureUnit(1, 0);
+    glBindSampler(1, 0);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    blurTimer_.end();
+    stats.passes.push_back({"blur x" + std::to_string(s.filter.blurIterations), msSince(cpuStart), blurTimer_.lastMs()});
 }
 
 void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
@@ -85,38 +342,33 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glCullFace(GL_BACK);
 
     const gl::Program& program = forward_;
     program.use();
-    program.set("uViewProjection", glm::mat4(frame.viewProjection));
-    program.set("uCameraPosition", glm::vec3(frame.view.eye));
-    const LightFrame& light = frame.light;
-    program.set("uLightType", int(light.type));
-    program.set("uLightDirection", glm::vec3(light.direction));
-    program.set("uLightPosition", glm::vec3(light.position));
-    program.set("uLightColor", glm::vec3(light.radiance));
-    program.set("uLightCosOuter", float(light.cosOuter));
-    program.set("uLightCosInner", float(light.cosInner));
-    program.set("uLightRange", float(light.range));
-    program.set("uAmbient", float(frame.settings.light.ambient));
-    program.set("uShadowTermOnly", frame.settings.viewMode == ViewMode::ShadowTermOnly ? 1 : 0);
+    const bool useBlurredTerm = frame.shadowed && termTargets_.allocated();
+    setLightingUniforms(program, frame, useBlurredTerm);
+    if (useBlurredTerm) {
+        glBindTextureUnit(2, termTargets_.term(0));
+        glBindSampler(2, 0);
+    }
+    program.set("uOutputMode", frame.settings.viewMode == ViewMode::ShadowTermOnly ? 1 : 0);
 
-    gpuScene_->bindVertexArray();
-    const Scene& scene = frame.scene;
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
+    const Scene& scene = frame.scene;
+    InstanceMask all;
     for (int blendPass = 0; blendPass < 2; ++blendPass) {
         if (blendPass == 1) {
             glEnable(GL_BLEND);
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
         }
-        gpuScene_->forEachRun(scene, {}, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
+        gpuScene_->bindVertexArray();
+        gpuScene_->forEachRun(scene, all, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
             const bool blended = prim.material >= 0 && prim.material < int(scene.materials.size()) &&
                                  scene.materials[std::size_t(prim.material)].alphaMode == AlphaMode::Blend;
             if (blended != (blendPass == 1)) return;
-            setMaterial(program, scene, prim.material);
-            setWinding(mirrored);
+            setMaterial(program, scene, prim.material, true);
+            glFrontFace(mirrored ? GL_CW : GL_CCW);
             glDrawElementsInstancedBaseVertexBaseInstance(
                 GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
                 reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
@@ -134,8 +386,10 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glDisable(GL_SCISSOR_TEST);
-    glBindTextureUnit(0, 0);
-    glBindSampler(0, 0);
+    for (GLuint unit : {0u, 1u, 2u}) {
+        glBindTextureUnit(unit, 0);
+        glBindSampler(unit, 0);
+    }
     glBindVertexArray(0);
     glUseProgram(0);
     forwardTimer_.end();

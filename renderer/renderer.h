@@ -1,16 +1,19 @@
 #pragma once
-// The frame: passes with explicit inputs and outputs, run in the same code in a GLFW window and
-// in a headless EGL context. Each pass sets the whole pipeline state it needs and restores what
-// it changed, so one pass never leaks culling, offsets or sRGB into the next.
+// The frame: passes with explicit inputs and outputs, run by the same code in a GLFW window and in
+// a headless EGL context. Each pass sets the whole pipeline state it needs and restores what it
+// changed, so one pass never leaks culling, polygon offset or sRGB into the next.
+//
+//   shadow setup (GL-free math: B, SSM/PSM/LiSPSM matrix)  ->  caster culling against B
+//   shadow pass (depth map)  ->  [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
 #include "frame_setup.h"
 #include "frame_stats.h"
 #include "gl/program.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
+#include "shadow_resources.h"
 
 #include <memory>
 #include <string>
-#include <vector>
 
 namespace shadowlab {
 
@@ -24,7 +27,7 @@ public:
     // nullptr and a message when the shaders do not build on this GL.
     static std::unique_ptr<Renderer> create(std::string& error);
 
-    // Uploads the scene (geometry once; textures once).
+    // Uploads the scene (geometry and textures once).
     void setScene(const Scene& scene);
     // After node transforms changed (animation): new instance matrices.
     void updateInstances(const Scene& scene);
@@ -32,18 +35,35 @@ public:
     // Draws one view of `scene` with `settings` into `viewport`. `seconds` drives the animated sun.
     FrameStats render(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport);
 
-    // Waits for GPU timings (headless renders report real GPU ms this way).
+    // Waits for the GPU timings of the frames in flight (headless renders report real GPU ms).
     void resolveTimings();
+
+    // The last shadow map (depth texture), for insets; 0 before the first shadowed frame.
+    GLuint shadowMapTexture() const { return shadowMap_.texture(); }
+    const ShadowSetup& lastShadowSetup() const { return lastSetup_; }
+    const GpuScene* gpuScene() const { return gpuScene_.get(); }
 
 private:
     Renderer() = default;
     struct Frame;
+    void shadowPass(const Frame& frame, FrameStats& stats);
+    void shadowTermPass(const Frame& frame, FrameStats& stats);
+    void blurPasses(const Frame& frame, FrameStats& stats);
     void forwardPass(const Frame& frame, FrameStats& stats);
-    void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex) const;
+    void setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const;
+    void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cullBackFaces) const;
+    void drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
+                   FrameStats& stats) const;
 
     gl::Program forward_;
+    gl::Program shadowDepth_;
+    gl::Program blur_;
+    gl::VertexArray emptyVao_;  // fullscreen triangles read no attributes
     std::unique_ptr<GpuScene> gpuScene_;
-    GpuTimer forwardTimer_;
+    ShadowMap shadowMap_;
+    ShadowTermTargets termTargets_;
+    ShadowSetup lastSetup_{};
+    GpuTimer shadowTimer_, termTimer_, blurTimer_, forwardTimer_;
 };
 
 }  // namespace shadowlab

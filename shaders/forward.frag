@@ -6,11 +6,12 @@ in vec3 vWorldPosition;
 in vec3 vWorldNormal;
 in vec2 vTexcoord;
 
-uniform bool uShadowTermOnly;  // thesis Fig. 6.5: unlit, unicoloured geometry showing only the shadow term
+// 0: lit; 1: the "shadow term only" view (thesis Fig. 6.5: unlit, unicoloured geometry);
+// 2: the raw shadow term, written for the eye-space blur (thesis 9.4.2).
+uniform int uOutputMode;
 
 out vec4 outColor;  // linear; the sRGB framebuffer encodes it
 
-float shadowTerm(vec3 p, vec3 n);
 #include "shadow_term.glsl"
 
 void main() {
@@ -19,8 +20,12 @@ void main() {
     vec3 n = normalize(vWorldNormal);
     if (!gl_FrontFacing) n = -n;  // double-sided surfaces seen from behind
     float shadow = shadowTerm(vWorldPosition, n);
-    if (uShadowTermOnly) {
-        outColor = vec4(vec3(0.9) * (0.25 + 0.75 * shadow), 1.0);
+    if (uOutputMode == 2) {
+        outColor = vec4(shadow, 0.0, 0.0, 1.0);
+        return;
+    }
+    if (uOutputMode == 1) {
+        outColor = vec4(vec3(0.9) * (0.2 + 0.8 * shadow), 1.0);
         return;
     }
     outColor = vec4(shade(albedo.rgb, vWorldPosition, n, shadow) + uEmissive, albedo.a);

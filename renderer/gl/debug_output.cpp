@@ -7,7 +7,7 @@
 namespace shadowlab::gl {
 namespace {
 
-void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+void APIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                const GLchar* message, const void* user) {
     (void)source;
     (void)id;

@@ -1,0 +1,12 @@
+// Linear light-space depth in [0, 1] over the shadow volume (TSM paper; thesis ch. 5, "linear
+// z-distribution"): distance along the light direction for directional lights, distance from the
+// light for spot lights, mapped by the range [near, far].
+uniform bool uLinearRadial;   // spot lights
+uniform vec3 uLinearOrigin;   // a point on the depth-0 side (directional) or the light position (spot)
+uniform vec3 uLinearAxis;     // the light's travel direction (directional)
+uniform vec2 uLinearRange;    // near, far
+
+float linearDepth(vec3 p) {
+    float t = uLinearRadial ? distance(p, uLinearOrigin) : dot(p - uLinearOrigin, uLinearAxis);
+    return clamp((t - uLinearRange.x) / (uLinearRange.y - uLinearRange.x), 0.0, 1.0);
+}

@@ -1,0 +1,226 @@
+// Shadows through the whole pipeline (math -> shadow pass -> lookup), checked against ray casts:
+// a ground point whose ray towards the light hits the box must be dark, one whose ray misses must
+// be lit, for SSM, PSM and LiSPSM and lights from the front, the side and behind the camera.
+#include "render_helpers.h"
+#include "test_scenes.h"
+
+#include <glm/gtc/constants.hpp>
+
+namespace shadowlab::test {
+namespace {
+
+const glm::dvec3 kBoxLo{-1, 0, -1}, kBoxHi{1, 2, 1};
+constexpr double kGroundHalf = 10.0;
+
+// Light directions (the way light travels) with the camera at (0, 6, 12) looking at the origin.
+glm::dvec3 fromFront() { return glm::normalize(glm::dvec3(0.2, -0.7, 1.0)); }   // towards the camera
+glm::dvec3 fromSide() { return glm::normalize(glm::dvec3(1.0, -0.8, 0.1)); }
+glm::dvec3 fromBehind() { return glm::normalize(glm::dvec3(-0.15, -0.6, -1.0)); }  // PSM's hard case
+
+Settings shadowView(ShadowMethod method) {
+    Settings s = lookAt({0.0, 6.0, 12.0}, {0.0, 0.0, 0.0});
+    s.method = method;
+    s.viewMode = ViewMode::ShadowTermOnly;  // lit 0.9, shadowed 0.18: no shading to confuse the test
+    s.shadowMapSize = 1024;
+    s.filter.filter = ShadowFilter::Nearest;
+    return s;
+}
+
+enum class Truth { Lit, Shadow, Unknown };
+
+// Ground truth for the pixel: the ground point it sees, if any, and whether it is robustly lit
+// (its shadow ray misses the box grown by `margin`) or robustly shadowed (it hits the box shrunk by it).
+Truth groundTruth(const Settings& s, glm::dvec3 light, int x, int y, double margin) {
+    glm::dvec3 o, d;
+    pixelRay(s, RenderTest::kWidth, RenderTest::kHeight, x, y, o, d);
+    if (d.y >= -1e-6) return Truth::Unknown;
+    const double t = -o.y / d.y;
+    const glm::dvec3 p = o + d * t;
+    if (std::abs(p.x) > kGroundHalf - margin || std::abs(p.z) > kGroundHalf - margin) return Truth::Unknown;
+    if (rayHitsBox(o, d, kBoxLo - margin, kBoxHi + margin, 0.0, t)) return Truth::Unknown;  // box or its edge in front
+    if (!rayHitsBox(p, -light, kBoxLo - margin, kBoxHi + margin)) return Truth::Lit;
+    if (rayHitsBox(p, -light, kBoxLo + margin, kBoxHi - margin)) return Truth::Shadow;
+    return Truth::Unknown;
+}
+
+struct Classification {
+    int lit = 0, litButDark = 0;
+    int shadow = 0, shadowButLit = 0;
+};
+
+Classification classify(const RgbaImage& image, const Settings& s, glm::dvec3 light, double margin) {
+    Classification c;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const Truth truth = groundTruth(s, light, x, y, margin);
+            const bool dark = luminance(image.at(x, y)) < 180.0;  // between 118 (shadow) and 243 (lit)
+            if (truth == Truth::Lit) {
+                ++c.lit;
+                c.litButDark += dark;
+            } else if (truth == Truth::Shadow) {
+                ++c.shadow;
+                c.shadowButLit += !dark;
+            }
+        }
+    return c;
+}
+
+struct Case {
+    ShadowMethod method;
+    const char* lightName;
+    glm::dvec3 (*light)();
+};
+
+class ShadowRender : public RenderTest, public ::testing::WithParamInterface<Case> {};
+
+TEST_P(ShadowRender, GeometricShadowIsDarkAndOpenGroundIsLit) {
+    const Case c = GetParam();
+    const glm::dvec3 light = c.light();
+    const Scene scene = planeBoxScene(light);
+    Settings s = shadowView(c.method);
+    FrameStats stats;
+    const RgbaImage image = render(scene, s, &stats);
+    const Classification k = classify(image, s, light, 0.25);
+    ASSERT_GT(k.shadow, 100) << "the box's shadow must be in view";
+    ASSERT_GT(k.lit, 1000);
+    // Tolerances: 2 % of pixels, for texel-sized steps along the shadow outline under SSM focusing.
+    EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << c.lightName << ": shadowed ground rendered lit";
+    EXPECT_LT(k.litButDark, k.lit * 2 / 100) << c.lightName << ": lit ground rendered dark (acne or wrong map)";
+    EXPECT_GT(stats.castersDrawn, 0u);
+    EXPECT_EQ(stats.shadowMapSize, 1024);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    MethodsAndLights, ShadowRender,
+    ::testing::Values(Case{ShadowMethod::SsmFocused, "front", fromFront}, Case{ShadowMethod::SsmFocused, "side", fromSide},
+                      Case{ShadowMethod::SsmFocused, "behind", fromBehind}, Case{ShadowMethod::Psm, "front", fromFront},
+                      Case{ShadowMethod::Psm, "side", fromSide}, Case{ShadowMethod::Psm, "behind", fromBehind},
+                      Case{ShadowMethod::Lispsm, "front", fromFront}, Case{ShadowMethod::Lispsm, "side", fromSide},
+                      Case{ShadowMethod::Lispsm, "behind", fromBehind},
+                      Case{ShadowMethod::SsmUnfocused, "side", fromSide}),
+    [](const ::testing::TestParamInfo<Case>& info) {
+        std::string name = std::string(methodName(info.param.method)) + "_" + info.param.lightName;
+        std::replace(name.begin(), name.end(), '-', '_');
+        return name;
+    });
+
+// Acne (thesis 3.3, ch. 5): with no offset a grazing light on the ground shadows part of the lit
+// ground; slope-scale offset (2.0 / 4.0) and back-face rendering each remove it.
+class Acne : public RenderTest {
+protected:
+    double acneFraction(DepthOffset mode, bool backFaces, DepthDistribution distribution) {
+        const glm::dvec3 light = glm::normalize(glm::dvec3(1.0, -0.35, 0.3));  // low sun: strong depth slope
+        const Scene scene = planeBoxScene(light);
+        Settings s = shadowView(ShadowMethod::SsmFocused);
+        s.bias.mode = mode;
+        s.bias.backFaces = backFaces;
+        s.bias.distribution = distribution;
+        const Classification k = classify(render(scene, s), s, light, 0.25);
+        EXPECT_GT(k.lit, 1000);
+        return double(k.litButDark) / std::max(1, k.lit);
+    }
+};
+
+TEST_F(Acne, NoBiasShowsFalseShadowSlopeScaleAndBackFacesRemoveIt) {
+    const double none = acneFraction(DepthOffset::None, false, DepthDistribution::Hyperbolic);
+    const double slope = acneFraction(DepthOffset::SlopeScale, false, DepthDistribution::Hyperbolic);
+    const double back = acneFraction(DepthOffset::None, true, DepthDistribution::Hyperbolic);
+    std::printf("acne fraction of lit ground: none %.4f, slope-scale %.4f, back faces %.4f\n", none, slope, back);
+    EXPECT_GT(none, 0.05) << "without any bias a grazing light must show acne";
+    EXPECT_LT(slope, 0.005);
+    EXPECT_LT(back, 0.005);
+}
+
+TEST_F(Acne, EveryBiasCombinationRendersWithoutGlErrors) {
+    for (DepthDistribution dist : {DepthDistribution::Hyperbolic, DepthDistribution::Linear})
+        for (DepthOffset mode : {DepthOffset::None, DepthOffset::Constant, DepthOffset::SlopeScale})
+            for (bool back : {false, true})
+                for (ShadowMethod m : {ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm}) {
+                    const Scene scene = planeBoxScene(fromSide());
+                    Settings s = shadowView(m);
+                    s.bias = {dist, mode, 0.002, 2.0, 4.0, back};
+                    renderer_.reset();
+                    const Classification k = classify(render(scene, s), s, fromSide(), 0.3);
+                    // Every combination still shadows the box's shadow.
+                    EXPECT_LT(k.shadowButLit, k.shadow / 20 + 1) << methodName(m) << " " << int(dist) << int(mode) << back;
+                }
+}
+
+// Eye-space blur (thesis 6.3): N = 4 changes only pixels near shadow boundaries of the N = 0 image.
+TEST_F(Acne, BlurChangesOnlyPixelsNearShadowBoundaries) {
+    const Scene scene = planeBoxScene(fromSide());
+    Settings s = shadowView(ShadowMethod::Lispsm);
+    s.filter.filter = ShadowFilter::Pcf2x2Hardware;
+    const RgbaImage sharp = render(scene, s);
+    s.filter.blurIterations = 4;
+    FrameStats stats;
+    const RgbaImage blurred = render(scene, s, &stats);
+    const bool ranBlur = std::any_of(stats.passes.begin(), stats.passes.end(),
+                                     [](const PassStats& p) { return p.name.rfind("blur", 0) == 0; });
+    EXPECT_TRUE(ranBlur);
+    const int w = sharp.width, h = sharp.height;
+    // Boundary pixels of the sharp image: a dark and a bright pixel within their 3x3 neighbourhood.
+    std::vector<std::uint8_t> boundary(std::size_t(w) * h, 0);
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            bool dark = false, bright = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const double l = luminance(sharp.at(x + dx, y + dy));
+                    dark |= l < 150.0;
+                    bright |= l > 220.0;
+                }
+            boundary[std::size_t(y) * w + x] = dark && bright;
+        }
+    // The blur's reach: 4 taps each side x strength 1 per pass, 4 iterations of x and y.
+    const int reach = 4 * 4 + 2;
+    int changed = 0, changedFar = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (std::abs(luminance(sharp.at(x, y)) - luminance(blurred.at(x, y))) <= 3.0) continue;
+            ++changed;
+            bool near = false;
+            for (int dy = -reach; dy <= reach && !near; ++dy)
+                for (int dx = -reach; dx <= reach && !near; ++dx) {
+                    const int px = x + dx, py = y + dy;
+                    near = px >= 0 && py >= 0 && px < w && py < h && boundary[std::size_t(py) * w + px];
+                }
+            changedFar += !near;
+        }
+    EXPECT_GT(changed, 50) << "the blur must soften the shadow outline";
+    EXPECT_EQ(changedFar, 0) << "pixels far from any shadow boundary changed";
+}
+
+TEST_F(Acne, BlurOffAllocatesNothingAndSameSettingsRenderIdentically) {
+    const Scene scene = planeBoxScene(fromSide());
+    Settings s = shadowView(ShadowMethod::Lispsm);
+    FrameStats stats;
+    const RgbaImage a = render(scene, s, &stats);
+    for (const PassStats& p : stats.passes) EXPECT_TRUE(p.name.rfind("blur", 0) != 0 && p.name != "shadow term") << p.name;
+    EXPECT_EQ(render(scene, s).pixels, a.pixels);
+}
+
+TEST_F(Acne, LitViewDarkensDiffuseInShadowButKeepsAmbient) {
+    const glm::dvec3 light = fromSide();
+    const Scene scene = planeBoxScene(light);
+    Settings s = shadowView(ShadowMethod::Lispsm);
+    s.viewMode = ViewMode::Lit;
+    s.light.ambient = 0.2;
+    const RgbaImage image = render(scene, s);
+    double litSum = 0, shadowSum = 0;
+    int lit = 0, shadow = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const Truth t = groundTruth(s, light, x, y, 0.3);
+            if (t == Truth::Lit) litSum += luminance(image.at(x, y)), ++lit;
+            if (t == Truth::Shadow) shadowSum += luminance(image.at(x, y)), ++shadow;
+        }
+    ASSERT_GT(lit, 0);
+    ASSERT_GT(shadow, 0);
+    const double litMean = litSum / lit, shadowMean = shadowSum / shadow;
+    EXPECT_GT(litMean, shadowMean + 60.0);
+    EXPECT_GT(shadowMean, 40.0) << "ambient is never shadowed";
+}
+
+}  // namespace
+}  // namespace shadowlab::test

@@ -1,0 +1,142 @@
+// The settings contract: JSON round trip, --set keys, refusal of bad input, clamping.
+#include "frame_setup.h"
+#include "settings/settings.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace shadowlab {
+namespace {
+
+TEST(Settings, JsonRoundTripKeepsEveryValue) {
+    Settings s;
+    s.method = ShadowMethod::Psm;
+    s.bias.mode = DepthOffset::Constant;
+    s.bias.distribution = DepthDistribution::Linear;
+    s.filter.blurIterations = 4;
+    s.camera.position = {1.5, -2.0, 1e5};
+    s.compare.count = 3;
+    s.lispsm.virtualFar = 123.0;
+    Settings back;
+    std::string error;
+    ASSERT_TRUE(fromJsonText(toJsonText(s), back, error)) << error;
+    EXPECT_EQ(back, s);
+}
+
+TEST(Settings, PartialJsonChangesOnlyWhatItNames) {
+    Settings s;
+    std::string error;
+    ASSERT_TRUE(fromJsonText(R"({"bias": {"slopeFactor": 3.5}, "method": "ssm"})", s, error)) << error;
+    Settings expected;
+    expected.bias.slopeFactor = 3.5;
+    expected.method = ShadowMethod::SsmFocused;
+    EXPECT_EQ(s, expected);
+}
+
+TEST(Settings, BadJsonIsRefusedAndLeavesSettingsUntouched) {
+    Settings s;
+    const Settings before = s;
+    std::string error;
+    EXPECT_FALSE(fromJsonText("{not json", s, error));
+    EXPECT_FALSE(fromJsonText(R"({"bias": {"nope": 1}})", s, error));
+    EXPECT_NE(error.find("bias.nope"), std::string::npos) << error;
+    EXPECT_FALSE(fromJsonText(R"({"method": "csm"})", s, error));
+    EXPECT_NE(error.find("method"), std::string::npos) << error;
+    EXPECT_FALSE(fromJsonText(R"({"shadowMapSize": "big"})", s, error));
+    EXPECT_FALSE(fromJsonText(R"({"shadowMapSize": 2.5})", s, error));
+    EXPECT_EQ(s, before);
+}
+
+TEST(Settings, SetByKeyParsesByTheTypeFound) {
+    Settings s;
+    std::string error;
+    ASSERT_TRUE(setByKey(s, "bias.mode=slope", error)) << error;
+    EXPECT_EQ(s.bias.mode, DepthOffset::SlopeScale);
+    ASSERT_TRUE(setByKey(s, "bias.mode=none", error)) << error;
+    EXPECT_EQ(s.bias.mode, DepthOffset::None);
+    ASSERT_TRUE(setByKey(s, "filter.blurIterations=8", error)) << error;
+    EXPECT_EQ(s.filter.blurIterations, 8);
+    ASSERT_TRUE(setByKey(s, "lispsm.useBodyVector=on", error)) << error;
+    EXPECT_TRUE(s.lispsm.useBodyVector);
+    ASSERT_TRUE(setByKey(s, "camera.position=1,2,3", error)) << error;
+    EXPECT_EQ(s.camera.position, glm::dvec3(1, 2, 3));
+    ASSERT_TRUE(setByKey(s, "compare.methods=psm,lispsm,ssm", error)) << error;
+    EXPECT_EQ(s.compare.methods[0], ShadowMethod::Psm);
+    EXPECT_FALSE(setByKey(s, "bias.mode=sloped", error));
+    EXPECT_FALSE(setByKey(s, "bias=1", error));
+    EXPECT_FALSE(setByKey(s, "nothing.here=1", error));
+    EXPECT_FALSE(setByKey(s, "shadowMapSize=abc", error));
+    EXPECT_FALSE(setByKey(s, "noequals", error));
+}
+
+TEST(Settings, SanitizeClampsAbsurdValuesAndReplacesNaN) {
+    Settings s;
+    s.shadowMapSize = 100000;
+    s.camera.fovYDeg = std::numeric_limits<double>::quiet_NaN();
+    s.camera.nearPlane = 0.0;
+    s.camera.farPlane = -5.0;
+    s.filter.blurIterations = 99;
+    const auto changes = sanitize(s);
+    EXPECT_GE(changes.size(), 5u);
+    EXPECT_EQ(s.shadowMapSize, 8192);
+    EXPECT_EQ(s.camera.fovYDeg, Settings().camera.fovYDeg);
+    EXPECT_GT(s.camera.nearPlane, 0.0);
+    EXPECT_GT(s.camera.farPlane, s.camera.nearPlane);
+    EXPECT_EQ(s.filter.blurIterations, 16);
+    Settings fine;
+    EXPECT_TRUE(sanitize(fine).empty());
+    s.shadowMapSize = 1000;
+    sanitize(s);
+    EXPECT_EQ(s.shadowMapSize, 1024);  // next power of two
+}
+
+TEST(FrameSetup, CameraFromSceneLooksWhereTheGltfCameraLooks) {
+    Camera cam;
+    // A camera at (0, 5, 10) rotated to look down the -Z axis tilted 30 degrees down.
+    glm::dmat4 m(1.0);
+    const double a = glm::radians(-30.0);
+    m[1] = {0, std::cos(a), std::sin(a), 0};
+    m[2] = {0, -std::sin(a), std::cos(a), 0};
+    m[3] = {0, 5, 10, 1};
+    cam.cameraToWorld = m;
+    cam.yfov = float(glm::radians(45.0));
+    cam.znear = 0.5f;
+    cam.zfar = 200.0f;
+    const CameraSettings s = cameraFromScene(cam, CameraSettings{});
+    EXPECT_NEAR(s.pitchDeg, -30.0, 1e-6);
+    const glm::dvec3 f = cameraForward(s);
+    EXPECT_NEAR(f.z, -std::cos(glm::radians(30.0)), 1e-9);
+    EXPECT_NEAR(s.fovYDeg, 45.0, 1e-4);
+    EXPECT_EQ(s.position, glm::dvec3(0, 5, 10));
+    EXPECT_FLOAT_EQ(float(s.farPlane), 200.0f);
+}
+
+TEST(FrameSetup, PointLightsAreLitButCastNoShadowWithANote) {
+    Scene scene;
+    Light lamp;
+    lamp.type = LightType::Point;
+    lamp.name = "Lamp";
+    scene.lights.push_back(lamp);
+    const LightFrame frame = resolveLight(scene, LightSettings{}, 0.0);
+    EXPECT_FALSE(frame.castsShadow);
+    EXPECT_NE(frame.note.find("Lamp"), std::string::npos);
+}
+
+TEST(FrameSetup, SunFromAzimuthElevationTravelsDownwards) {
+    Scene scene;
+    LightSettings l;
+    l.source = LightSource::Sun;
+    l.elevationDeg = 90.0;
+    const LightFrame frame = resolveLight(scene, l, 0.0);
+    EXPECT_NEAR(frame.direction.y, -1.0, 1e-12);
+    l.elevationDeg = 30.0;
+    l.animateSun = true;
+    const LightFrame a = resolveLight(scene, l, 0.0), b = resolveLight(scene, l, 9.0);
+    EXPECT_NEAR(a.direction.y, b.direction.y, 1e-12);  // the sun turns around the vertical
+    EXPECT_GT(glm::length(a.direction - b.direction), 0.1);
+}
+
+}  // namespace
+}  // namespace shadowlab
