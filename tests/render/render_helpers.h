@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 
 namespace shadowlab::test {
@@ -78,12 +79,22 @@ protected:
         if (!target_) target_ = std::make_unique<RenderTarget>(kWidth, kHeight);
         FrameStats s = renderer_->render(scene, settings, 0.0, Viewport{target_->framebuffer(), 0, 0, kWidth, kHeight});
         if (stats) *stats = s;
-        return target_->readColor();
+        RgbaImage image = target_->readColor();
+        // SHADOWLAB_TEST_IMAGES=DIR keeps every rendered image for a look (debugging aid).
+        if (const char* dir = std::getenv("SHADOWLAB_TEST_IMAGES")) {
+            const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+            std::string name = std::string(info->test_suite_name()) + "." + info->name() + "-" + std::to_string(++imageCount_);
+            std::replace(name.begin(), name.end(), '/', '_');
+            std::string error;
+            writePng(image, std::string(dir) + "/" + name + ".png", error);
+        }
+        return image;
     }
 
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<RenderTarget> target_;
     const Scene* scene_ = nullptr;
+    int imageCount_ = 0;
 };
 
 }  // namespace shadowlab::test

@@ -12,13 +12,13 @@ namespace {
 const glm::dvec3 kBoxLo{-1, 0, -1}, kBoxHi{1, 2, 1};
 constexpr double kGroundHalf = 10.0;
 
-// Light directions (the way light travels) with the camera at (0, 6, 12) looking at the origin.
+// Light directions (the way light travels) with the camera at (0, 9, 11) looking at the origin.
 glm::dvec3 fromFront() { return glm::normalize(glm::dvec3(0.2, -0.7, 1.0)); }   // towards the camera
 glm::dvec3 fromSide() { return glm::normalize(glm::dvec3(1.0, -0.8, 0.1)); }
-glm::dvec3 fromBehind() { return glm::normalize(glm::dvec3(-0.15, -0.6, -1.0)); }  // PSM's hard case
+glm::dvec3 fromBehind() { return glm::normalize(glm::dvec3(-0.7, -0.6, -0.45)); }  // PSM's hard case
 
 Settings shadowView(ShadowMethod method) {
-    Settings s = lookAt({0.0, 6.0, 12.0}, {0.0, 0.0, 0.0});
+    Settings s = lookAt({0.0, 9.0, 11.0}, {0.0, 0.0, 0.0});
     s.method = method;
     s.viewMode = ViewMode::ShadowTermOnly;  // lit 0.9, shadowed 0.18: no shading to confuse the test
     s.shadowMapSize = 1024;
@@ -81,7 +81,7 @@ TEST_P(ShadowRender, GeometricShadowIsDarkAndOpenGroundIsLit) {
     FrameStats stats;
     const RgbaImage image = render(scene, s, &stats);
     const Classification k = classify(image, s, light, 0.25);
-    ASSERT_GT(k.shadow, 100) << "the box's shadow must be in view";
+    ASSERT_GT(k.shadow, 60) << "the box's shadow must be in view";
     ASSERT_GT(k.lit, 1000);
     // Tolerances: 2 % of pixels, for texel-sized steps along the shadow outline under SSM focusing.
     EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << c.lightName << ": shadowed ground rendered lit";
