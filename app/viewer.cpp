@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "gl/debug_output.h"
 #include "render_target.h"
+#include "scenes/gltf_loader.h"
 #include "renderer.h"
 #include "stats_panel.h"
 #include "view_setup.h"
@@ -185,7 +186,7 @@ void runViewer(const ViewerOptions& options) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        if (ImGui::IsKeyPressed(ImGuiKey_F12)) screenshotRequested = true;
+        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) screenshotRequested = true;
         controller.apply(settings.camera, readCameraInput(window.get(), dt, lastCursor, g_scroll));
 
         const auto cpuStart = Clock::now();
