@@ -97,6 +97,24 @@ ShadowLight shadowLight(const LightFrame& light) {
     return s;
 }
 
+ClipPlanes clipPlanes(const glm::dmat4& m) {
+    // Gribb & Hartmann: the clip-space conditions -w <= x, y, z <= w as world-space planes.
+    const glm::dvec4 row0{m[0][0], m[1][0], m[2][0], m[3][0]}, row1{m[0][1], m[1][1], m[2][1], m[3][1]},
+        row2{m[0][2], m[1][2], m[2][2], m[3][2]}, row3{m[0][3], m[1][3], m[2][3], m[3][3]};
+    return {{row3 + row0, row3 - row0, row3 + row1, row3 - row1, row3 + row2, row3 - row2}};
+}
+
+bool boxMayBeVisible(const ClipPlanes& c, const Aabb& box) {
+    if (box.empty()) return false;
+    for (const glm::dvec4& p : c.planes) {
+        // The box corner farthest along the plane normal (the "p-vertex").
+        const glm::dvec3 far{p.x >= 0 ? box.max.x : box.min.x, p.y >= 0 ? box.max.y : box.min.y,
+                             p.z >= 0 ? box.max.z : box.min.z};
+        if (glm::dot(glm::dvec3(p), far) + p.w < 0.0) return false;
+    }
+    return true;
+}
+
 ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, const Aabb& sceneBounds) {
     ShadowParams p;
     p.method = settings.method;

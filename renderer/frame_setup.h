@@ -33,6 +33,14 @@ CameraSettings cameraFromScene(const Camera& camera, const CameraSettings& base)
 LightFrame resolveLight(const Scene& scene, const LightSettings& light, double seconds);
 
 ShadowLight shadowLight(const LightFrame& light);
+
+// View-frustum culling of the forward pass: may a box be visible through `viewProjection`
+// (GL clip conventions)? Conservative: a box straddling a plane is kept.
+struct ClipPlanes {
+    glm::dvec4 planes[6];  // inside where dot(plane, (p, 1)) >= 0
+};
+ClipPlanes clipPlanes(const glm::dmat4& viewProjection);
+bool boxMayBeVisible(const ClipPlanes& planes, const Aabb& box);
 ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, const Aabb& sceneBounds);
 
 }  // namespace shadowlab

@@ -19,6 +19,7 @@ struct FrameStats {
     std::vector<PassStats> passes;
     std::size_t trianglesDrawn = 0;
     std::size_t drawCalls = 0;
+    std::size_t instancesVisible = 0;  // after view-frustum culling
     std::size_t castersDrawn = 0;
     std::size_t castersCulled = 0;
     int shadowMapSize = 0;

@@ -62,6 +62,7 @@ struct Renderer::Frame {
     bool reversedDepth = false;
     LinearDepthRange linear;
     InstanceMask casters;
+    InstanceMask visible;  // view-frustum culling of the shadow-term and forward passes
 };
 
 std::unique_ptr<Renderer> Renderer::create(std::string& error) {
@@ -95,7 +96,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     const double aspect = viewport.height > 0 ? double(viewport.width) / viewport.height : 1.0;
     const ViewFrustum view = viewFrustum(settings.camera, aspect);
     Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(),
-                resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}};
+                resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}, {}};
     stats.lightNote = frame.light.note;
     if (!gpuScene_) return stats;
 
@@ -119,7 +120,13 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
             ++(reaches ? stats.castersDrawn : stats.castersCulled);
         }
     }
-    stats.passes.push_back({"shadow setup (CPU)", msSince(setupStart), 0.0});
+    const ClipPlanes planes = clipPlanes(frame.viewProjection);
+    frame.visible.assign(scene.instances.size(), 0);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        frame.visible[i] = boxMayBeVisible(planes, scene.instances[i].worldBounds) ? 1 : 0;
+        stats.instancesVisible += frame.visible[i];
+    }
+    stats.passes.push_back({"setup + culling (CPU)", msSince(setupStart), 0.0});
 
     if (frame.shadowed) shadowPass(frame, stats);
     const bool blur = frame.shadowed && settings.filter.blurIterations > 0;
@@ -274,7 +281,7 @@ void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
     termFrame.viewport = Viewport{termTargets_.framebuffer(0), 0, 0, vp.width, vp.height};
     setLightingUniforms(program, termFrame, false);
     program.set("uOutputMode", 2);
-    drawScene(program, frame, {}, false, stats);
+    drawScene(program, frame, frame.visible, false, stats);
     glDisable(GL_DEPTH_TEST);
     glBindTextureUnit(0, 0);
     glBindSampler(0, 0);
@@ -355,7 +362,6 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
 
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
     const Scene& scene = frame.scene;
-    InstanceMask all;
     for (int blendPass = 0; blendPass < 2; ++blendPass) {
         if (blendPass == 1) {
             glEnable(GL_BLEND);
@@ -363,7 +369,7 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
             glDepthMask(GL_FALSE);
         }
         gpuScene_->bindVertexArray();
-        gpuScene_->forEachRun(scene, all, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
+        gpuScene_->forEachRun(scene, frame.visible, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
             const bool blended = prim.material >= 0 && prim.material < int(scene.materials.size()) &&
                                  scene.materials[std::size_t(prim.material)].alphaMode == AlphaMode::Blend;
             if (blended != (blendPass == 1)) return;

@@ -138,5 +138,29 @@ TEST(FrameSetup, SunFromAzimuthElevationTravelsDownwards) {
     EXPECT_GT(glm::length(a.direction - b.direction), 0.1);
 }
 
+TEST(FrameSetup, FrustumCullingKeepsVisibleAndStraddlingBoxesOnly) {
+    CameraSettings cam;
+    cam.position = {0, 0, 0};
+    cam.yawDeg = -90.0;  // looking down -Z
+    cam.pitchDeg = 0.0;
+    cam.nearPlane = 0.1;
+    cam.farPlane = 100.0;
+    const ViewFrustum v = viewFrustum(cam, 1.0);
+    const ClipPlanes planes = clipPlanes(v.projectionMatrix() * v.viewMatrix());
+    auto box = [](glm::dvec3 c, double h) {
+        Aabb b;
+        b.extend(c - h);
+        b.extend(c + h);
+        return b;
+    };
+    EXPECT_TRUE(boxMayBeVisible(planes, box({0, 0, -10}, 1)));      // straight ahead
+    EXPECT_FALSE(boxMayBeVisible(planes, box({0, 0, 10}, 1)));      // behind
+    EXPECT_FALSE(boxMayBeVisible(planes, box({0, 0, -200}, 1)));    // beyond the far plane
+    EXPECT_FALSE(boxMayBeVisible(planes, box({50, 0, -10}, 1)));    // far to the right
+    EXPECT_TRUE(boxMayBeVisible(planes, box({0, 0, 0}, 5)));        // contains the eye
+    EXPECT_TRUE(boxMayBeVisible(planes, box({0, 0, -100.5}, 1)));   // straddles the far plane
+    EXPECT_FALSE(boxMayBeVisible(planes, Aabb{}));                  // empty
+}
+
 }  // namespace
 }  // namespace shadowlab
