@@ -1,0 +1,153 @@
+#pragma once
+// The shadow math core's public API: one call per light per frame computes the intersection body
+// B (thesis eq. 4.2), the world -> shadow-clip matrix of the chosen parameterization (SSM, PSM,
+// LiSPSM) and the diagnostics the UI shows. Pure GLM, double precision, no GL.
+//
+// Conventions (all GL):
+// - World space is right-handed; view space looks down -z; NDC z in [-1, 1].
+// - worldToShadowClip maps every vertex of B into the clip cube: -w <= x, y, z <= w with w > 0
+//   (checked by the tests and the stress suite with a 1e-4 tolerance on x/w, y/w, z/w).
+//   Texture coordinates are 0.5 * ndc + 0.5; the caller applies that bias.
+// - Depth test: with reverseDepthTest == false the shadow pass uses GL_LESS (clear to 1) and a
+//   receiver is lit when its depth <= stored depth (+ bias). With reverseDepthTest == true (PSM
+//   with an inverted post-perspective light, Stamminger & Drettakis section 3.1: the light rays
+//   converge, so the occluder is the hit FARTHEST from the converging point) the shadow pass uses
+//   GL_GREATER (clear to 0) and a receiver is lit when its depth >= stored depth (- bias).
+//   Equivalently: the "effective depth" (reverseDepthTest ? -z_ndc : z_ndc) always grows along
+//   the light's travel through B.
+// - Linear depth (TSM idea, thesis ch. 5): see LinearShadowDepth below; it always grows along the
+//   light's travel, so it never needs the reversed test.
+#include "math/aabb.h"
+#include "math/convex_body.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+enum class ShadowMethod { SsmFocused, SsmUnfocused, Psm, Lispsm };
+
+struct ViewFrustum {
+    glm::dvec3 eye{0.0};
+    glm::dvec3 forward{0.0, 0.0, -1.0};  // need not be unit; normalized internally
+    glm::dvec3 up{0.0, 1.0, 0.0};        // any vector not parallel to forward (else a fallback up is used)
+    double fovY = 1.0;                   // radians, full vertical angle
+    double aspect = 1.0;                 // width / height
+    double zNear = 0.1, zFar = 100.0;
+
+    glm::dmat4 viewMatrix() const;        // world -> view (look-at)
+    glm::dmat4 projectionMatrix() const;  // view -> clip, GL perspective, NDC z in [-1, 1]
+};
+
+enum class ShadowLightKind { Directional, Spot };
+
+struct ShadowLight {
+    ShadowLightKind kind = ShadowLightKind::Directional;
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // the way light travels (world); spot: the cone axis
+    glm::dvec3 position{0.0};              // spot only
+    double outerConeAngle = 0.5;           // spot only: half-angle, radians (clamped to [1e-3, 85 deg])
+    double range = 0.0;                    // spot only: far distance; <= 0 means "up to the scene bounds"
+};
+
+struct LispsmParams {
+    bool useBodyVector = false;  // thesis 9.2.6: frame up-vector from B instead of the view direction
+    double virtualFar = 0.0;     // thesis 9.2.5 / paper 4.4: z_f used for n only; <= 0 or >= zFar: real far
+    bool overrideN = false;      // use `n` instead of n_opt
+    double n = 1.0;
+};
+
+struct ShadowParams {
+    ShadowMethod method = ShadowMethod::Lispsm;
+    LispsmParams lispsm;
+    // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
+    bool collectPolygons = true;
+};
+
+// How the light looks in the camera's post-perspective space (Stamminger & Drettakis 3.1, 3.2).
+enum class PostPerspectiveLight { None, Point, InvertedPoint, Directional };
+
+struct ShadowDiagnostics {
+    ShadowMethod method = ShadowMethod::Lispsm;
+    bool focused = false;  // the map is fitted to B (everything but SsmUnfocused and some fallbacks)
+    // World-space face loops (each a convex polygon, counter-clockwise seen from outside).
+    PolygonList bodyB;    // the intersection body B = ((V n S) + l) n S n L   (thesis eq. 4.2)
+    PolygonList viewV;    // the view frustum V
+    PolygonList sceneS;   // the scene bounds S
+    PolygonList lightL;   // spot lights: the light frustum L (a pyramid around the cone); else empty
+    PolygonList lispsmP;  // LiSPSM: the perspective frustum P in world space; else empty
+    glm::dvec3 projectionCenter{0.0};  // LiSPSM: C (world); PSM: the post-perspective light mapped back (if finite)
+    bool hasProjectionCenter = false;
+    // LiSPSM (thesis 9.2.5). n is the distance of C to P's near plane in light space; a value of
+    // +infinity means "uniform" (P degenerates to the orthographic SSM fit). `warp` = 1 / nUsed is
+    // what the matrix is built from, so the limit n -> infinity is exact and continuous.
+    double nUsed = 0.0, nOptReal = 0.0, nOptVirtual = 0.0, warp = 0.0;
+    double gamma = 0.0;  // radians: angle between the frame's up vector (view dir or body vector) and -l
+    double d = 0.0;      // light-space z extent of B (thesis 9.2.4)
+    double z0 = 0.0, z1 = 0.0;  // eye-space z (negative in front) of the points of eq. 8.13
+    // PSM (Stamminger & Drettakis 4.2).
+    double psmMoveBack = 0.0;   // how far the virtual camera moved back along -forward
+    double psmNear = 0.0;       // the pushed near plane of the virtual camera (distance from it)
+    double psmFar = 0.0;
+    PostPerspectiveLight psmLightKind = PostPerspectiveLight::None;
+    std::string fallback;  // empty if the method ran as designed; else what was done instead and why
+};
+
+// Linear light-space depth for a vertex shader (TSM, thesis ch. 5): write
+//   t = radial ? length(p - origin) : dot(p - origin, axis);
+//   depth01 = (t - nearDepth) / (farDepth - nearDepth);     // gl_Position.z = (2 * depth01 - 1) * w
+// [nearDepth, farDepth] covers all of B, which already contains every caster that can shadow a
+// visible point (B is extruded toward the light up to the scene bounds). It grows along the
+// light's travel, so the ordinary GL_LESS test applies whatever the method.
+// Directional: axis = l (unit), origin = eye. Spot: radial distance from the light position.
+struct LinearShadowDepth {
+    bool radial = false;
+    glm::dvec3 origin{0.0};
+    glm::dvec3 axis{0.0, -1.0, 0.0};
+    double nearDepth = 0.0, farDepth = 1.0;
+};
+
+struct ShadowSetup {
+    glm::dmat4 worldToShadowClip{1.0};  // what the shadow pass renders with (see conventions above)
+    bool reverseDepthTest = false;      // GL_GREATER + clear to 0 + reversed compare (see above)
+    LinearShadowDepth linearDepth;
+    // Caster culling data (casterCanReach): B's outward planes and bounds.
+    std::vector<glm::dvec4> bodyPlanes;
+    Aabb bodyBounds;
+    ShadowDiagnostics diagnostics;
+    bool valid = false;  // false only when B is empty (nothing visible is lit): treat everything as lit
+};
+
+// Never throws; bad input (NaN, zero vectors, near >= far) gives valid == false with the reason in
+// diagnostics.fallback.
+ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
+                               const ShadowParams& params);
+
+// Can an object with these world bounds cast a shadow onto a visible, lit point? Every point that
+// shadows a visible point lies in B (B = V n S extruded toward the light, clipped by S and L), so
+// a box that is separated from B by one of B's planes (or by B's bounds) cannot. Conservative
+// (a small relative tolerance keeps touching boxes). False when !setup.valid.
+bool casterCanReach(const ShadowSetup& setup, const Aabb& casterBounds);
+
+// --- Building blocks, public for tests and the UI ---------------------------------------------
+
+// The spot light's frustum L: a square pyramid circumscribing the cone, apex at the light.
+// nearPlane/farPlane are distances along the axis (far: range, or to the farthest corner of S).
+struct SpotFrustum {
+    glm::dmat4 view{1.0}, projection{1.0};
+    double nearPlane = 0.0, farPlane = 0.0;
+};
+SpotFrustum spotFrustum(const ShadowLight& light, const Aabb& sceneBounds);
+
+// B = ((V n S) + l) n S n L (thesis eq. 4.2, 9.2.2). `viewProjection` is the camera's (any far
+// plane, e.g. the virtual one). Empty when nothing visible is lit.
+ConvexBody intersectionBody(const glm::dmat4& viewProjection, const ShadowLight& light, const Aabb& sceneBounds);
+
+// n_opt for directional lights, thesis eq. 8.11; returns +infinity for sin(gamma) == 0.
+double lispsmNOptDirectional(double zNear, double d, double sinGamma);
+// n_opt from eye-space z values, thesis eq. 8.13 in the form consistent with eq. 8.11/8.12
+// (n = d / (sqrt(z1/z0) - 1)); +infinity when z1/z0 <= 1.
+double lispsmNOptGeneral(double d, double z0, double z1);
+
+}  // namespace shadowlab
