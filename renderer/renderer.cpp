@@ -11,41 +11,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-// Linear light-space depth (thesis ch. 5, TSM): along the light direction for a sun, radial for a
-// spot, over the depth range of the whole scene so every caster fits.
-struct LinearDepthRange {
-    bool radial = false;
-    glm::dvec3 origin{0.0};
-    glm::dvec3 axis{0.0, -1.0, 0.0};
-    glm::dvec2 range{0.0, 1.0};
-};
-
-LinearDepthRange linearDepthRange(const LightFrame& light, const Aabb& bounds) {
-    LinearDepthRange r;
-    r.radial = light.type != LightType::Directional;
-    r.axis = light.direction;
-    r.origin = r.radial ? light.position : (bounds.empty() ? glm::dvec3(0.0) : bounds.center());
-    double lo = 0.0, hi = 0.0;
-    for (int i = 0; i < 8 && !bounds.empty(); ++i) {
-        const glm::dvec3 c = bounds.corner(i);
-        const double t = r.radial ? glm::distance(c, r.origin) : glm::dot(c - r.origin, r.axis);
-        lo = i == 0 && !r.radial ? t : std::min(lo, t);
-        hi = std::max(hi, t);
-    }
-    const double pad = std::max(1e-6, (hi - lo) * 1e-3);
-    r.range = {lo - pad, hi + pad};
-    return r;
-}
-
-// Inverted lights may come with a matrix whose w is negative over B; (-M) is the same projective
-// map with w > 0, which GL's clipping needs.
-glm::dmat4 withPositiveW(const glm::dmat4& m, const ShadowDiagnostics& d) {
-    double wSum = 0.0;
-    for (const auto& face : d.bodyB)
-        for (const glm::dvec3& p : face) wSum += (m * glm::dvec4(p, 1.0)).w;
-    return wSum < 0.0 ? -m : m;
-}
-
 }  // namespace
 
 struct Renderer::Frame {
@@ -60,7 +25,7 @@ struct Renderer::Frame {
     glm::dmat4 worldToShadowClip{1.0};
     bool linearDepth = false;
     bool reversedDepth = false;
-    LinearDepthRange linear;
+    LinearShadowDepth linear;
     InstanceMask casters;
     InstanceMask visible;  // view-frustum culling of the shadow-term and forward passes
 };
@@ -108,11 +73,11 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         frame.shadowed = frame.shadow.valid;
     }
     if (frame.shadowed) {
-        frame.worldToShadowClip = withPositiveW(frame.shadow.worldToShadowClip, frame.shadow.diagnostics);
+        frame.worldToShadowClip = frame.shadow.worldToShadowClip;  // w > 0 over B by contract
         frame.linearDepth = settings.bias.distribution == DepthDistribution::Linear;
         // Linear depth grows away from the light whatever the warp, so it never needs reversing.
         frame.reversedDepth = frame.shadow.reverseDepthTest && !frame.linearDepth;
-        frame.linear = linearDepthRange(frame.light, scene.bounds);
+        frame.linear = frame.shadow.linearDepth;
         frame.casters.assign(scene.instances.size(), 0);
         for (std::size_t i = 0; i < scene.instances.size(); ++i) {
             const bool reaches = casterCanReach(frame.shadow, scene.instances[i].worldBounds);
@@ -208,7 +173,7 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
     program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
     program.set("uLinearAxis", glm::vec3(frame.linear.axis));
-    program.set("uLinearRange", glm::vec2(frame.linear.range));
+    program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
     FrameStats drawStats;
     // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
     drawScene(program, frame, frame.casters, s.bias.backFaces, drawStats);
@@ -252,7 +217,7 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
     program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
     program.set("uLinearAxis", glm::vec3(frame.linear.axis));
-    program.set("uLinearRange", glm::vec2(frame.linear.range));
+    program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
     program.set("uShadowFilter", int(s.filter.filter));
     program.set("uConstantOffset", s.bias.mode == DepthOffset::Constant ? float(s.bias.constant) : 0.0f);
     program.set("uShadowTexel", glm::vec2(1.0f / float(shadowMap_.size())));
