@@ -1,0 +1,518 @@
+// A malformed corpus written by the tests into a temporary folder: every bad file gives one clear
+// message naming the file and the reason, never a crash and never a half-loaded scene. Plus small
+// synthetic valid files for the paths the samples do not cover (strips, fans, index widths).
+#include "scenes/gltf_loader.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <string>
+#include <unistd.h>
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using Bytes = std::vector<unsigned char>;
+
+template <typename T>
+void append(Bytes& bytes, const T& value) {
+    const auto* p = reinterpret_cast<const unsigned char*>(&value);
+    bytes.insert(bytes.end(), p, p + sizeof(T));
+}
+
+void pad4(Bytes& bytes, unsigned char with = 0) {
+    while (bytes.size() % 4 != 0) bytes.push_back(with);
+}
+
+// One triangle: 3 float positions (36 bytes) then 3 uint16 indices (6 bytes + 2 padding).
+Bytes triangleBin(std::uint16_t lastIndex = 2, float firstX = 0.0f) {
+    Bytes b;
+    const float positions[9] = {firstX, 0, 0, 1, 0, 0, 0, 1, 0};
+    for (float f : positions) append(b, f);
+    for (std::uint16_t i : {std::uint16_t(0), std::uint16_t(1), lastIndex}) append(b, i);
+    pad4(b);
+    return b;
+}
+
+json triangleJson(const std::string& bufferUri = "tri.bin") {
+    json j = {
+        {"asset", {{"version", "2.0"}}},
+        {"scene", 0},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"mesh", 0}, {"name", "TriangleNode"}}}},
+        {"meshes", {{{"name", "Tri"}, {"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+        {"accessors",
+         {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+          {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
+        {"bufferViews",
+         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}}, {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 6}}}},
+        {"buffers", {{{"byteLength", 44}}}},
+    };
+    if (!bufferUri.empty()) j["buffers"][0]["uri"] = bufferUri;
+    return j;
+}
+
+Bytes glb(const json& j, const Bytes& bin) {
+    std::string text = j.dump();
+    while (text.size() % 4 != 0) text.push_back(' ');
+    Bytes out;
+    append(out, std::uint32_t(0x46546C67));
+    append(out, std::uint32_t(2));
+    append(out, std::uint32_t(12 + 8 + text.size() + (bin.empty() ? 0 : 8 + bin.size())));
+    append(out, std::uint32_t(text.size()));
+    append(out, std::uint32_t(0x4E4F534A));
+    out.insert(out.end(), text.begin(), text.end());
+    if (!bin.empty()) {
+        append(out, std::uint32_t(bin.size()));
+        append(out, std::uint32_t(0x004E4942));
+        out.insert(out.end(), bin.begin(), bin.end());
+    }
+    return out;
+}
+
+// A valid 2x1 PNG (RGB, 8-bit): one red and one blue pixel.
+const Bytes kPng2x1 = {
+    0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00,
+    0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x02, 0x00, 0x00, 0x00, 0x7B, 0x40, 0xE8, 0xDD, 0x00, 0x00, 0x00,
+    0x0D, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9C, 0x63, 0xF8, 0xCF, 0x00, 0x04, 0xFF, 0x01, 0x07, 0x00, 0x01, 0xFF,
+    0xE2, 0x23, 0x9E, 0x59, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
+
+class Malformed : public testing::Test {
+protected:
+    fs::path dir;
+
+    void SetUp() override {
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::temp_directory_path() /
+              ("shadowlab_scene_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    fs::path write(const std::string& name, const Bytes& bytes) {
+        const fs::path p = dir / name;
+        std::ofstream out(p, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return p;
+    }
+    fs::path write(const std::string& name, const std::string& text) { return write(name, Bytes(text.begin(), text.end())); }
+    // A .gltf with its triangle .bin next to it.
+    fs::path writeGltf(const json& j, const Bytes& bin = triangleBin(), const std::string& name = "scene.gltf") {
+        write("tri.bin", bin);
+        return write(name, j.dump(2));
+    }
+
+    // The load fails with "<file>: <reason>" where the reason contains `reason`.
+    void expectError(const fs::path& file, const std::string& reason) {
+        const LoadResult r = loadScene(file);
+        ASSERT_FALSE(r.ok()) << "loaded although " << reason << " was expected";
+        EXPECT_FALSE(r.scene.has_value());
+        EXPECT_EQ(r.error.rfind(file.string() + ": ", 0), 0u) << r.error;
+        EXPECT_NE(r.error.find(reason), std::string::npos) << "message: " << r.error;
+    }
+    Scene expectLoads(const fs::path& file) {
+        LoadResult r = loadScene(file);
+        EXPECT_TRUE(r.ok()) << r.error;
+        return r.ok() ? std::move(*r.scene) : Scene{};
+    }
+};
+
+TEST_F(Malformed, TheValidTriangleLoadsInBothContainers) {
+    const Scene a = expectLoads(writeGltf(triangleJson()));
+    EXPECT_EQ(a.triangleCount(), 1u);
+    const Scene b = expectLoads(write("tri.glb", glb(triangleJson(""), triangleBin())));
+    EXPECT_EQ(b.triangleCount(), 1u);
+    EXPECT_EQ(a.meshes[0].primitives[0].positions, b.meshes[0].primitives[0].positions);
+}
+
+TEST_F(Malformed, MissingFile) { expectError(dir / "nothere.gltf", "file not found"); }
+
+TEST_F(Malformed, EmptyFile) { expectError(write("empty.gltf", std::string()), "empty"); }
+
+TEST_F(Malformed, NotJsonAtAll) { expectError(write("text.gltf", std::string("hello, I am not glTF")), "not a glTF file"); }
+
+TEST_F(Malformed, BrokenJson) { expectError(write("broken.gltf", std::string("{ \"asset\": { \"version\": ")), "invalid JSON"); }
+
+TEST_F(Malformed, JsonWithoutAsset) { expectError(write("noasset.gltf", std::string("{\"nodes\": []}")), "asset"); }
+
+TEST_F(Malformed, UnsupportedVersion) {
+    json j = triangleJson();
+    j["asset"]["version"] = "1.0";
+    expectError(writeGltf(j), "version 1.0");
+}
+
+TEST_F(Malformed, TruncatedGlb) {
+    Bytes whole = glb(triangleJson(""), triangleBin());
+    whole.resize(whole.size() / 2);
+    expectError(write("half.glb", whole), "truncated GLB");
+}
+
+TEST_F(Malformed, TruncatedGlbHeader) {
+    Bytes whole = glb(triangleJson(""), triangleBin());
+    whole.resize(10);
+    expectError(write("header.glb", whole), "truncated GLB");
+}
+
+TEST_F(Malformed, GlbMissingItsLastBytes) {
+    Bytes whole = glb(triangleJson(""), triangleBin());
+    whole.resize(whole.size() - 4);
+    expectError(write("short.glb", whole), "truncated GLB");
+}
+
+TEST_F(Malformed, GlbExtensionWithoutMagic) { expectError(write("fake.glb", std::string("GLTF0000garbage")), "magic"); }
+
+TEST_F(Malformed, BufferViewBeyondItsBuffer) {
+    json j = triangleJson();
+    j["bufferViews"][0]["byteOffset"] = 40;
+    expectError(writeGltf(j), "out of bounds of buffer");
+}
+
+TEST_F(Malformed, AccessorBeyondItsBufferView) {
+    json j = triangleJson();
+    j["accessors"][0]["count"] = 100;
+    expectError(writeGltf(j), "out of bounds of bufferView");
+}
+
+TEST_F(Malformed, AccessorWithHugeByteOffset) {
+    json j = triangleJson();
+    j["accessors"][0]["byteOffset"] = 4000000000LL;
+    expectError(writeGltf(j), "out of bounds of bufferView");
+}
+
+TEST_F(Malformed, AccessorThatDoesNotExist) {
+    json j = triangleJson();
+    j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9;
+    expectError(writeGltf(j), "accessor 9 does not exist");
+}
+
+TEST_F(Malformed, PositionOfTheWrongType) {
+    json j = triangleJson();
+    j["accessors"][0]["type"] = "VEC2";
+    expectError(writeGltf(j), "expected VEC3");
+}
+
+TEST_F(Malformed, StrideSmallerThanTheElement) {
+    json j = triangleJson();
+    j["bufferViews"][0]["byteStride"] = 8;
+    expectError(writeGltf(j), "byteStride 8");
+}
+
+TEST_F(Malformed, IndexBeyondTheVertexCount) {
+    expectError(writeGltf(triangleJson(), triangleBin(7)), "index 7");
+    expectError(writeGltf(triangleJson(), triangleBin(7)), "out of range");
+}
+
+TEST_F(Malformed, NanPositionsSkipThatPrimitiveWithAWarning) {
+    json j = triangleJson();
+    // A second primitive over the same data but with a NaN first vertex (second buffer).
+    Bytes bin = triangleBin();
+    const Bytes nanBin = triangleBin(2, std::numeric_limits<float>::quiet_NaN());
+    bin.insert(bin.end(), nanBin.begin(), nanBin.end());
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 36}});
+    j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+    j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 2}}}, {"indices", 1}});
+    const fs::path file = writeGltf(j, bin);
+    const LoadResult r = loadScene(file);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.scene->triangleCount(), 1u);
+    ASSERT_EQ(r.scene->meshes[0].primitives.size(), 1u);
+    EXPECT_FALSE(r.scene->bounds.empty());
+    bool warned = false;
+    for (const std::string& w : r.warnings) warned = warned || w.find("NaN") != std::string::npos;
+    EXPECT_TRUE(warned);
+    EXPECT_EQ(r.warnings, r.scene->warnings);
+}
+
+TEST_F(Malformed, InfinitePositionsToo) {
+    const fs::path file = writeGltf(triangleJson(), triangleBin(2, std::numeric_limits<float>::infinity()));
+    const LoadResult r = loadScene(file);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.scene->triangleCount(), 0u);
+    EXPECT_TRUE(r.scene->meshes[0].primitives.empty());
+}
+
+TEST_F(Malformed, MissingExternalBuffer) {
+    write("scene.gltf", triangleJson("nothere.bin").dump());
+    expectError(dir / "scene.gltf", "nothere.bin");
+}
+
+TEST_F(Malformed, ExternalBufferShorterThanDeclared) {
+    json j = triangleJson();
+    const Bytes bin = triangleBin();
+    expectError(writeGltf(j, Bytes(bin.begin(), bin.begin() + 20)), "tri.bin");
+}
+
+json withTexture(json j, const json& image) {
+    j["images"] = {image};
+    j["textures"] = {{{"source", 0}}};
+    j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    return j;
+}
+
+TEST_F(Malformed, MissingImage) {
+    expectError(writeGltf(withTexture(triangleJson(), {{"uri", "nothere.png"}})), "nothere.png");
+}
+
+TEST_F(Malformed, UndecodableImage) {
+    write("bad.png", std::string("this is no PNG"));
+    expectError(writeGltf(withTexture(triangleJson(), {{"uri", "bad.png"}})), "cannot be decoded");
+}
+
+TEST_F(Malformed, ImageBufferViewBeyondItsBuffer) {
+    json j = withTexture(triangleJson(""), {{"bufferView", 2}, {"mimeType", "image/png"}});
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 40}, {"byteLength", 4000}});
+    expectError(write("img.glb", glb(j, triangleBin())), "out of bounds");
+}
+
+TEST_F(Malformed, ValidEmbeddedPngIsExpandedToRgba) {
+    json j = withTexture(triangleJson(""), {{"bufferView", 2}, {"mimeType", "image/png"}});
+    Bytes bin = triangleBin();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", kPng2x1.size()}});
+    bin.insert(bin.end(), kPng2x1.begin(), kPng2x1.end());
+    pad4(bin);
+    j["buffers"][0]["byteLength"] = bin.size();
+    const Scene s = expectLoads(write("img.glb", glb(j, bin)));
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.textures[0].width, 2);
+    EXPECT_EQ(s.textures[0].height, 1);
+    ASSERT_EQ(s.textures[0].rgba8.size(), 8u);
+    // RGB input: opaque alpha added; red then blue.
+    EXPECT_EQ(s.textures[0].rgba8, (std::vector<std::uint8_t>{255, 0, 0, 255, 0, 0, 255, 255}));
+}
+
+TEST_F(Malformed, RequiredDracoIsRefused) {
+    json j = triangleJson();
+    j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    expectError(writeGltf(j), "KHR_draco_mesh_compression");
+}
+
+TEST_F(Malformed, RequiredSupportedExtensionsLoad) {
+    json j = triangleJson();
+    j["extensionsUsed"] = {"KHR_mesh_quantization", "KHR_texture_transform"};
+    j["extensionsRequired"] = {"KHR_mesh_quantization", "KHR_texture_transform"};
+    EXPECT_EQ(expectLoads(writeGltf(j)).triangleCount(), 1u);
+}
+
+TEST_F(Malformed, NodeCycle) {
+    json j = triangleJson();
+    j["nodes"] = {{{"mesh", 0}, {"children", {1}}}, {{"children", {0}}}};
+    expectError(writeGltf(j), "cycle");
+}
+
+TEST_F(Malformed, NodeWithTwoParents) {
+    json j = triangleJson();
+    j["nodes"] = {{{"children", {2}}}, {{"children", {2}}}, {{"mesh", 0}}};
+    j["scenes"][0]["nodes"] = {0, 1};
+    expectError(writeGltf(j), "two parents");
+}
+
+TEST_F(Malformed, ChildThatDoesNotExist) {
+    json j = triangleJson();
+    j["nodes"][0]["children"] = {5};
+    expectError(writeGltf(j), "child node 5 does not exist");
+}
+
+TEST_F(Malformed, NonFiniteNodeTransform) {
+    json j = triangleJson();
+    j["nodes"][0]["scale"] = {1.0, 1.0};
+    expectError(writeGltf(j), "scale must be 3 finite numbers");
+}
+
+TEST_F(Malformed, SparseIndexBeyondTheAccessor) {
+    json j = triangleJson();
+    Bytes bin = triangleBin();
+    append(bin, std::uint16_t(9));  // sparse index 9 of a 3-vertex accessor
+    pad4(bin);
+    for (float f : {5.0f, 5.0f, 5.0f}) append(bin, f);
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 2}});
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 12}});
+    j["accessors"][0]["sparse"] = {{"count", 1},
+                                   {"indices", {{"bufferView", 2}, {"componentType", 5123}}},
+                                   {"values", {{"bufferView", 3}}}};
+    expectError(writeGltf(j, bin), "sparse: index 9");
+}
+
+TEST_F(Malformed, SparseWithoutDenseDataStartsFromZeros) {
+    json j = triangleJson();
+    Bytes bin = triangleBin();
+    append(bin, std::uint16_t(1));
+    pad4(bin);
+    for (float f : {0.0f, 2.0f, 0.0f}) append(bin, f);
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 2}});
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 12}});
+    j["accessors"][0].erase("bufferView");
+    j["accessors"][0]["sparse"] = {{"count", 1},
+                                   {"indices", {{"bufferView", 2}, {"componentType", 5123}}},
+                                   {"values", {{"bufferView", 3}}}};
+    const Scene s = expectLoads(writeGltf(j, bin));
+    ASSERT_EQ(s.meshes[0].primitives.size(), 1u);
+    const auto& p = s.meshes[0].primitives[0].positions;
+    EXPECT_EQ(p, (std::vector<glm::vec3>{{0, 0, 0}, {0, 2, 0}, {0, 0, 0}}));
+}
+
+TEST_F(Malformed, PointsAndLinesAreSkippedWithAWarning) {
+    json j = triangleJson();
+    j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"mode", 0}});
+    j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"mode", 1}});
+    const Scene s = expectLoads(writeGltf(j));
+    EXPECT_EQ(s.meshes[0].primitives.size(), 1u);
+    int warned = 0;
+    for (const std::string& w : s.warnings) warned += w.find("points/lines") != std::string::npos;
+    EXPECT_EQ(warned, 2);
+}
+
+TEST_F(Malformed, StripsAndFansBecomeListsWithGltfWinding) {
+    // 4 vertices of a unit quad; strip 0-1-2-3 and fan 0-1-2-3, non-indexed.
+    Bytes bin;
+    for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 1.f, 1.f, 0.f}) append(bin, f);
+    json j = triangleJson();
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["bufferViews"] = {{{"buffer", 0}, {"byteLength", 48}}};
+    j["accessors"] = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}};
+    j["meshes"][0]["primitives"] = {{{"attributes", {{"POSITION", 0}}}, {"mode", 5}},
+                                    {{"attributes", {{"POSITION", 0}}}, {"mode", 6}}};
+    const Scene s = expectLoads(writeGltf(j, bin));
+    ASSERT_EQ(s.meshes[0].primitives.size(), 2u);
+    EXPECT_EQ(s.meshes[0].primitives[0].indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
+    EXPECT_EQ(s.meshes[0].primitives[1].indices, (std::vector<std::uint32_t>{1, 2, 0, 2, 3, 0}));
+    // Both strip triangles of the quad face +z (consistent winding).
+    for (const glm::vec3& n : s.meshes[0].primitives[0].normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
+}
+
+TEST_F(Malformed, UnsignedByteAndIntIndices) {
+    for (int componentType : {5121, 5125}) {
+        SCOPED_TRACE(componentType);
+        Bytes bin;
+        for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) append(bin, f);
+        for (std::uint32_t i : {2u, 1u, 0u}) {
+            if (componentType == 5121) append(bin, std::uint8_t(i));
+            else append(bin, i);
+        }
+        pad4(bin);
+        json j = triangleJson();
+        j["buffers"][0]["byteLength"] = bin.size();
+        j["bufferViews"][1]["byteLength"] = componentType == 5121 ? 3 : 12;
+        j["accessors"][1]["componentType"] = componentType;
+        const Scene s = expectLoads(writeGltf(j, bin));
+        EXPECT_EQ(s.meshes[0].primitives[0].indices, (std::vector<std::uint32_t>{2, 1, 0}));
+    }
+}
+
+TEST_F(Malformed, FloatIndicesAreRefused) {
+    json j = triangleJson();
+    j["accessors"][1]["componentType"] = 5126;
+    expectError(writeGltf(j), "not an unsigned integer type");
+}
+
+TEST_F(Malformed, MaterialThatDoesNotExist) {
+    json j = triangleJson();
+    j["meshes"][0]["primitives"][0]["material"] = 3;
+    expectError(writeGltf(j), "material 3 does not exist");
+}
+
+TEST_F(Malformed, LightThatDoesNotExist) {
+    json j = triangleJson();
+    j["extensionsUsed"] = {"KHR_lights_punctual"};
+    j["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "directional"}}}}}}};
+    j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 4}}}};
+    expectError(writeGltf(j), "light 4 does not exist");
+}
+
+TEST_F(Malformed, SpotAndDirectionalLightsArePlacedByTheirNodes) {
+    json j = triangleJson();
+    j["extensionsUsed"] = {"KHR_lights_punctual"};
+    j["extensions"] = {{"KHR_lights_punctual",
+                        {{"lights",
+                          {{{"type", "directional"}, {"name", "sun"}},
+                           {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}}}}}}};
+    // Node 1 rotates by -90 degrees about x, which turns the light's -Z into -Y (straight down).
+    const double h = std::sqrt(0.5);
+    j["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"rotation", {-h, 0, 0, h}}});
+    j["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}, {"translation", {1, 2, 3}}});
+    j["scenes"][0]["nodes"] = {0, 1, 2};
+    const Scene s = expectLoads(writeGltf(j));
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_FALSE(s.defaultLight);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    EXPECT_NEAR(s.lights[0].direction.y, -1.0, 1e-9);
+    EXPECT_EQ(s.lights[1].type, LightType::Spot);
+    EXPECT_FLOAT_EQ(s.lights[1].outerConeAngle, 0.5f);
+    EXPECT_EQ(s.lights[1].position, glm::dvec3(1, 2, 3));
+    EXPECT_NEAR(s.lights[1].direction.z, -1.0, 1e-12);
+}
+
+TEST_F(Malformed, CubicSplineAnimationNeedsThreeValuesPerKey) {
+    json j = triangleJson();
+    Bytes bin = triangleBin();
+    for (float t : {0.f, 1.f}) append(bin, t);
+    for (int k = 0; k < 4; ++k)  // 4 vec3: wrong (cubic spline needs 6 for 2 keys)
+        for (float f : {0.f, 1.f, 2.f}) append(bin, f);
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 8}});
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 52}, {"byteLength", 48}});
+    j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"}});
+    j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
+    j["animations"] = {{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+                        {"samplers", {{{"input", 2}, {"output", 3}, {"interpolation", "CUBICSPLINE"}}}}}};
+    expectError(writeGltf(j, bin), "expected 6");
+    j["animations"][0]["samplers"][0]["interpolation"] = "STEP";
+    j["accessors"][3]["count"] = 2;
+    const Scene s = expectLoads(writeGltf(j, bin));
+    ASSERT_EQ(s.animations.size(), 1u);
+    EXPECT_EQ(s.animations[0].channels[0].interpolation, Interpolation::Step);
+    EXPECT_FLOAT_EQ(s.animations[0].duration, 1.0f);
+}
+
+// Every prefix of a valid GLB, and random byte corruptions of it, load or fail cleanly.
+TEST_F(Malformed, TruncationsAndCorruptionsNeverCrash) {
+    json j = withTexture(triangleJson(""), {{"bufferView", 2}, {"mimeType", "image/png"}});
+    Bytes bin = triangleBin();
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", kPng2x1.size()}});
+    bin.insert(bin.end(), kPng2x1.begin(), kPng2x1.end());
+    pad4(bin);
+    j["buffers"][0]["byteLength"] = bin.size();
+    const Bytes valid = glb(j, bin);
+    ASSERT_TRUE(loadScene(write("valid.glb", valid)).ok());
+
+    int failures = 0;
+    for (std::size_t size = 0; size < valid.size(); size += 3) {
+        const fs::path file = write("cut.glb", Bytes(valid.begin(), valid.begin() + long(size)));
+        const LoadResult r = loadScene(file);
+        EXPECT_FALSE(r.ok()) << "prefix of " << size << " bytes loaded";
+        EXPECT_EQ(r.error.rfind(file.string() + ": ", 0), 0u) << r.error;
+        failures += !r.ok();
+    }
+    EXPECT_GT(failures, 0);
+
+    std::mt19937 rng(1234);
+    for (int round = 0; round < 300; ++round) {
+        Bytes bytes = valid;
+        const int flips = 1 + int(rng() % 4);
+        for (int f = 0; f < flips; ++f) bytes[rng() % bytes.size()] = static_cast<unsigned char>(rng());
+        const fs::path file = write("fuzz.glb", bytes);
+        const LoadResult r = loadScene(file);
+        if (r.ok()) {
+            EXPECT_TRUE(r.error.empty());
+        } else {
+            EXPECT_EQ(r.error.rfind(file.string() + ": ", 0), 0u) << r.error;
+            EXPECT_GT(r.error.size(), file.string().size() + 2);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace shadowlab
