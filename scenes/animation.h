@@ -1,0 +1,41 @@
+#pragma once
+// glTF animation sampling (glTF 2.0 spec, "Animations"; the papers' dynamic scenes): channels
+// animate a node's translation, rotation or scale with LINEAR (quaternion slerp for rotations),
+// STEP or CUBICSPLINE (Hermite with in/out tangents) interpolation. GL-free: the sampler writes
+// Node TRS, updateWorldTransforms (loader) then refreshes world matrices, instances and bounds.
+#include "scenes/scene.h"
+
+#include <glm/glm.hpp>
+
+namespace shadowlab {
+
+// The channel's value at time `t` (seconds, in the animation's own time line). Before the first
+// key the first value holds, after the last key the last value (the spec's clamping). xyz for
+// translation/scale, a unit quaternion (x, y, z, w) for rotation. A channel with no keys, or with
+// fewer values than its interpolation needs, returns nullopt-like `valid = false`.
+struct ChannelSample {
+    bool valid = false;
+    glm::vec4 value{0.0f};
+};
+ChannelSample sampleChannel(const AnimationChannel& channel, double t);
+
+// Length of an animation: its last key time over all channels (Animation::duration when larger).
+double animationDuration(const Animation& animation);
+// Longest animation of the scene; 0 when it has none.
+double sceneAnimationDuration(const Scene& scene);
+
+// The time inside one loop of a `duration` long animation played since 0 (t mod duration,
+// non-negative); 0 for a zero duration.
+double loopTime(double t, double duration);
+
+// Writes every channel of every animation at scene time `t` (each animation looped over its own
+// duration) into the nodes' translation/rotation/scale. Channels that target a missing node or a
+// node given by a matrix (the spec forbids animating those) are skipped. Returns the number of
+// channels applied. Does not update world matrices: see animateScene.
+int applyAnimations(Scene& scene, double t);
+
+// applyAnimations + updateWorldTransforms (world matrices, instances, lights, cameras, bounds).
+// Returns false (scene untouched) when the scene has no animation.
+bool animateScene(Scene& scene, double t);
+
+}  // namespace shadowlab

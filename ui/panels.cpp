@@ -1,0 +1,516 @@
+#include "panels.h"
+
+#include "frame_setup.h"
+#include "widgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace shadowlab::ui {
+
+namespace {
+
+constexpr float kControlWidth = 370.0f;
+
+const ShadowMethod kMethods[] = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Psm,
+                                 ShadowMethod::Lispsm};
+
+const char* methodLabel(ShadowMethod m) {
+    switch (m) {
+        case ShadowMethod::SsmFocused: return "SSM (focused on B)";
+        case ShadowMethod::SsmUnfocused: return "SSM (unfocused, whole scene)";
+        case ShadowMethod::Psm: return "PSM (perspective)";
+        case ShadowMethod::Lispsm: return "LiSPSM (light space perspective)";
+    }
+    return "?";
+}
+
+const char* methodTip(ShadowMethod m) {
+    switch (m) {
+        case ShadowMethod::SsmFocused:
+            return "Uniform shadow map fitted to the intersection body B = ((V n S) + l) n S n L "
+                   "(thesis 4.2, eq. 4.2; 9.2.2).";
+        case ShadowMethod::SsmUnfocused:
+            return "Uniform shadow map over the whole scene bounds S: the baseline without focusing (thesis 2.3.1).";
+        case ShadowMethod::Psm:
+            return "Perspective shadow maps: the map is rendered in the camera's post-perspective space "
+                   "(Stamminger & Drettakis 2-4; thesis 7.2).";
+        case ShadowMethod::Lispsm:
+            return "Light space perspective shadow maps: a perspective warp P whose near/far planes are parallel "
+                   "to the light direction, strength set by n (thesis ch. 8, 9.2).";
+    }
+    return "";
+}
+
+// Combo over an enum given as parallel arrays of values and names; returns true on change.
+template <class E, std::size_t N>
+bool enumCombo(const char* label, E& value, const E (&values)[N], const char* const (&names)[N], const char* tooltip) {
+    int current = 0;
+    for (std::size_t i = 0; i < N; ++i)
+        if (values[i] == value) current = int(i);
+    bool changed = false;
+    if (ImGui::BeginCombo(label, names[current])) {
+        for (std::size_t i = 0; i < N; ++i) {
+            if (ImGui::Selectable(names[i], int(i) == current)) {
+                changed = values[i] != value;
+                value = values[i];
+            }
+        }
+        ImGui::EndCombo();
+    }
+    tip(tooltip);
+    return changed;
+}
+
+bool methodCombo(const char* label, ShadowMethod& method, const char* tooltip) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, methodLabel(method))) {
+        for (ShadowMethod m : kMethods) {
+            if (ImGui::Selectable(methodLabel(m), m == method)) {
+                changed = m != method;
+                method = m;
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", methodTip(m));
+        }
+        ImGui::EndCombo();
+    }
+    tip(tooltip);
+    return changed;
+}
+
+std::string degrees(double radians) { return formatNumber(radians * 180.0 / 3.14159265358979323846, 4) + " deg"; }
+
+const char* postPerspectiveName(PostPerspectiveLight kind) {
+    switch (kind) {
+        case PostPerspectiveLight::None: return "none (PSM not active)";
+        case PostPerspectiveLight::Point: return "point (light in front of the camera)";
+        case PostPerspectiveLight::InvertedPoint: return "inverted point (light behind the camera)";
+        case PostPerspectiveLight::Directional: return "directional (light parallel to the view plane)";
+    }
+    return "?";
+}
+
+void fallbackLine(const ShadowDiagnostics& d) {
+    if (!d.fallback.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", d.fallback.c_str());
+}
+
+}  // namespace
+
+bool drawMethodPanel(Settings& s, const FrameStats& stats) {
+    bool changed = false;
+    changed |= methodCombo("method", s.method,
+                           "The shadow map parameterization. Compare them side by side in 'Split compare'. "
+                           "Hover an entry for its paper section.");
+    changed |= checkbox("shadows", s.shadows, "Render and look up the shadow map at all (thesis 2.3.1).");
+    static const int kSizes[] = {256, 512, 1024, 2048, 4096, 8192};
+    static const char* const kSizeNames[] = {"256", "512", "1024", "2048", "4096", "8192"};
+    changed |= enumCombo("shadow map size", s.shadowMapSize, kSizes, kSizeNames,
+                         "Resolution of the square depth map. Perspective aliasing shrinks with more texels, but "
+                         "the warping methods get the same quality from fewer (thesis 3.1, 8.2).");
+    if (stats.shadowMapSize > 0)
+        ImGui::TextDisabled("rendered %d x %d, %s", stats.shadowMapSize, stats.shadowMapSize,
+                            stats.shadow.focused ? "focused on B" : "not focused");
+    fallbackLine(stats.shadow);
+    return changed;
+}
+
+bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d) {
+    bool changed = false;
+    LispsmSettings& l = s.lispsm;
+    if (s.method != ShadowMethod::Lispsm) ImGui::TextDisabled("(active only with the LiSPSM method)");
+    changed |= checkbox("auto virtual z_f", l.autoVirtualFar,
+                        "Thesis 9.2.5: set the virtual far plane z_f used for n to the farthest visible depth, so "
+                        "no resolution goes to empty space behind the visible scene.");
+    ImGui::BeginDisabled(l.autoVirtualFar);
+    {
+        // Log scale: useful values span from a few near-plane distances to the far plane.
+        double zf = l.virtualFar > 0.0 ? l.virtualFar : s.camera.farPlane;
+        const double lo = std::max(1e-4, s.camera.nearPlane * 1.01), hi = std::max(lo * 2.0, s.camera.farPlane);
+        zf = std::clamp(zf, lo, hi);
+        if (sliderDouble("virtual z_f", zf, lo, hi, "%.3g",
+                         "Thesis 9.2.5 ('virtual' view frustum V_v): the far distance used ONLY to compute n. "
+                         "Smaller = stronger warp, better near shadows; focusing on B still uses the real far "
+                         "plane. Log scale.",
+                         ImGuiSliderFlags_Logarithmic)) {
+            l.virtualFar = zf;
+            changed = true;
+        }
+    }
+    ImGui::EndDisabled();
+    changed |= checkbox("body vector", l.useBodyVector,
+                        "Thesis 9.2.6: build light space around the direction from the eye into the middle of B "
+                        "(the body vector) instead of the view direction; helps when B differs a lot from V.");
+    changed |= checkbox("override n", l.overrideN,
+                        "Use a manual n instead of n_opt (thesis 8.2, 9.2.5). Small n = strong perspective warp "
+                        "(PSM-like), large n = uniform (SSM-like).");
+    ImGui::BeginDisabled(!l.overrideN);
+    changed |= sliderDouble("n", l.n, 1e-3, 1e4, "%.4g",
+                            "Distance of the projection centre C to the near plane of P, in light space "
+                            "(thesis 8.1, Fig. 8.1; 9.2.4). Log scale.",
+                            ImGuiSliderFlags_Logarithmic);
+    ImGui::EndDisabled();
+
+    ImGui::Separator();
+    readout("n used", formatNumber(d.nUsed), "The n the LiSPSM matrix was built with this frame (+inf = uniform).");
+    readout("n_opt (real z_f)", formatNumber(d.nOptReal),
+            "Thesis eq. 8.13 (9.2.5) evaluated with the real far plane.");
+    readout("n_opt (virtual z_f)", formatNumber(d.nOptVirtual),
+            "Thesis eq. 8.13 with the virtual far plane z_f (9.2.5); used unless n is overridden.");
+    readout("gamma", degrees(d.gamma),
+            "Angle between the light-space up vector (view direction or body vector) and the direction to the light "
+            "(thesis 8.2.3, 9.2.3). Near 0: LiSPSM converges to uniform shadow maps (Fig. 8.11).");
+    readout("d", formatNumber(d.d), "Light-space z extent of B, the depth of P (thesis 9.2.4, 9.2.5).");
+    readout("z0", formatNumber(d.z0), "Eye-space z of the point on P's near plane used by eq. 8.13 (thesis 9.2.5).");
+    readout("z1", formatNumber(d.z1), "Eye-space z of the point on P's far plane used by eq. 8.13 (thesis 9.2.5).");
+    return changed;
+}
+
+bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
+    if (s.method != ShadowMethod::Psm) ImGui::TextDisabled("(read-outs of the PSM method)");
+    readout("move-back", formatNumber(d.psmMoveBack),
+            "How far the virtual camera is moved back along -view so every shadow caster is in front of it "
+            "(Stamminger & Drettakis 4.2, thesis 7.2.2).");
+    readout("near plane push", formatNumber(d.psmNear),
+            "The virtual camera's near plane pushed forward as far as B allows, which spends less of the map on "
+            "the space in front of the viewer (Stamminger & Drettakis 4.2, 6).");
+    readout("virtual far", formatNumber(d.psmFar), "Far plane of the virtual PSM camera.");
+    readout("light after projection", postPerspectiveName(d.psmLightKind),
+            "What the light becomes in post-perspective space: a directional light turns into a point light, or an "
+            "inverted point light when it lies behind the viewer (Stamminger & Drettakis 3.1, 3.2; thesis 7.2.3).");
+    return false;
+}
+
+bool drawBiasPanel(Settings& s) {
+    bool changed = false;
+    BiasSettings& b = s.bias;
+    static const DepthDistribution kDist[] = {DepthDistribution::Hyperbolic, DepthDistribution::Linear};
+    static const char* const kDistNames[] = {"hyperbolic (post-perspective z)", "linear (light-space distance)"};
+    changed |= enumCombo("z-distribution", b.distribution, kDist, kDistNames,
+                         "Thesis 5.3, Fig. 5.6: the perspective warps store hyperbolic z (1/w); a linear light-space "
+                         "depth (as in TSM) makes the bias uniform over the map.");
+    static const DepthOffset kModes[] = {DepthOffset::None, DepthOffset::Constant, DepthOffset::SlopeScale};
+    static const char* const kModeNames[] = {"none", "constant", "slope-scale (polygon offset)"};
+    changed |= enumCombo("offset", b.mode, kModes, kModeNames,
+                         "Thesis 5.1, 5.3: a depth bias against incorrect self-shadowing (acne, 3.3). Constant moves "
+                         "every depth equally; slope-scale adds factor * dz + r * units (eq. 5.2).");
+    if (b.mode == DepthOffset::Constant)
+        changed |= dragDouble("constant", b.constant, 0.00005f, -0.05, 0.05, "%.5f",
+                              "Depth units added in the shadow compare (thesis 5.1, Fig. 5.3: too much moves the "
+                              "shadows away from their casters).");
+    if (b.mode == DepthOffset::SlopeScale) {
+        changed |= dragDouble("factor", b.slopeFactor, 0.05f, -16.0, 16.0, "%.2f",
+                              "glPolygonOffset factor: weight of the depth slope dz (thesis eq. 5.2; the thesis "
+                              "uses 2.0).");
+        changed |= dragDouble("units", b.slopeUnits, 0.1f, -1000.0, 1000.0, "%.1f",
+                              "glPolygonOffset units: the minimal resolvable offsets added (thesis eq. 5.2; the "
+                              "thesis uses 4.0).");
+    }
+    changed |= checkbox("back faces", b.backFaces,
+                        "Render only the back faces into the shadow map (front faces culled): removes acne on "
+                        "closed objects, may unshadow their back sides (thesis 5.1 Fig. 5.5, 9.3).");
+    return changed;
+}
+
+bool drawFilterPanel(Settings& s) {
+    bool changed = false;
+    FilterSettings& f = s.filter;
+    static const ShadowFilter kFilters[] = {ShadowFilter::Nearest, ShadowFilter::Pcf2x2Hardware, ShadowFilter::Pcf3x3,
+                                            ShadowFilter::Pcf4x4};
+    static const char* const kFilterNames[] = {"nearest", "PCF 2x2 (hardware)", "PCF 3x3", "PCF 4x4"};
+    changed |= enumCombo("filter", f.filter, kFilters, kFilterNames,
+                         "How the shadow map is sampled: one texel, or percentage-closer filtering that averages "
+                         "depth-compare results (thesis 4.3.1, 4.3.2).");
+    changed |= sliderInt("blur iterations", f.blurIterations, 0, 16,
+                         "Separable eye-space blur of the shadow term, hiding projection aliasing and softening "
+                         "shadow edges (thesis 6.3, 9.4.2). 0 = no blur pass at all.");
+    ImGui::BeginDisabled(f.blurIterations == 0);
+    changed |= checkbox("depth-dependent", f.depthDependentBlur,
+                        "Shrink the blur kernel with depth so small distant shadows are not smeared (thesis 9.4.2).");
+    changed |= sliderDouble("strength", f.blurStrength, 0.0, 8.0, "%.2f",
+                            "Blur kernel width in pixels per pass (thesis 6.3).");
+    ImGui::EndDisabled();
+    bool termOnly = s.viewMode == ViewMode::ShadowTermOnly;
+    if (checkbox("shadow term only", termOnly,
+                 "Show only the shadow term on unlit, single-coloured geometry, as thesis Fig. 6.5 does, so "
+                 "aliasing is not hidden by textures and lighting.")) {
+        s.viewMode = termOnly ? ViewMode::ShadowTermOnly : ViewMode::Lit;
+        changed = true;
+    }
+    return changed;
+}
+
+bool drawLightPanel(Settings& s, const Scene& scene) {
+    bool changed = false;
+    LightSettings& l = s.light;
+    // One list: the glTF lights, then the two lights set by angles.
+    std::string current;
+    if (l.source == LightSource::Sun) current = "Sun (azimuth / elevation)";
+    else if (l.source == LightSource::Spot) current = "Spot (position, azimuth / elevation)";
+    else if (l.sceneLight < int(scene.lights.size())) current = "glTF: " + scene.lights[std::size_t(l.sceneLight)].name;
+    else current = "glTF light " + std::to_string(l.sceneLight) + " (missing)";
+    if (ImGui::BeginCombo("light", current.c_str())) {
+        for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+            const Light& light = scene.lights[i];
+            const char* kind = light.type == LightType::Directional ? "directional"
+                               : light.type == LightType::Spot      ? "spot"
+                                                                    : "point, no shadow";
+            const std::string name = "glTF: " + (light.name.empty() ? "light " + std::to_string(i) : light.name) + " (" +
+                                     kind + ")##" + std::to_string(i);
+            const bool selected = l.source == LightSource::Scene && l.sceneLight == int(i);
+            if (ImGui::Selectable(name.c_str(), selected)) {
+                changed |= !selected;
+                l.source = LightSource::Scene;
+                l.sceneLight = int(i);
+            }
+        }
+        if (ImGui::Selectable("Sun (azimuth / elevation)", l.source == LightSource::Sun)) {
+            changed |= l.source != LightSource::Sun;
+            l.source = LightSource::Sun;
+        }
+        if (ImGui::Selectable("Spot (position, azimuth / elevation)", l.source == LightSource::Spot)) {
+            changed |= l.source != LightSource::Spot;
+            l.source = LightSource::Spot;
+        }
+        ImGui::EndCombo();
+    }
+    tip("The shadow-casting light: one of the scene's KHR_lights_punctual lights (point lights are lit without "
+        "shadows), a directional sun or a spot light. Directional vs. point lights change what PSM sees after the "
+        "projection (Stamminger & Drettakis 3).");
+    const bool angles = l.source != LightSource::Scene;
+    ImGui::BeginDisabled(!angles);
+    changed |= sliderDouble("azimuth", l.azimuthDeg, -180.0, 180.0, "%.1f deg",
+                            "Compass direction the light comes from, around +Y (0 = from +X). Turning it changes the "
+                            "angle gamma between view and light (thesis 8.3, Figs. 8.10, 8.11).");
+    changed |= sliderDouble("elevation", l.elevationDeg, -10.0, 90.0, "%.1f deg",
+                            "Height of the light above the horizon. Low suns give long shadows, the hard case for "
+                            "uniform maps (thesis 3.1).");
+    ImGui::EndDisabled();
+    if (l.source == LightSource::Spot) {
+        glm::vec3 p(l.spotPosition);
+        if (ImGui::DragFloat3("spot position", &p.x, 0.1f)) {
+            l.spotPosition = glm::dvec3(p);
+            changed = true;
+        }
+        tip("Where the spot light stands (world units). Spot lights add their frustum L to B (thesis eq. 4.2).");
+        changed |= sliderDouble("cone", l.spotOuterConeDeg, 1.0, 89.0, "%.1f deg",
+                                "Outer cone half-angle; the light frustum L circumscribes it (thesis 9.2.2).");
+        changed |= dragDouble("range", l.spotRange, 0.1f, 0.0, 1e6, "%.1f",
+                              "Far distance of the spot frustum; 0 = up to the scene bounds.");
+    }
+    glm::vec3 color(l.color);
+    if (ImGui::ColorEdit3("colour", &color.x)) {
+        l.color = glm::dvec3(color);
+        changed = true;
+    }
+    tip("Light colour (linear).");
+    changed |= sliderDouble("intensity", l.intensity, 0.0, 20.0, "%.2f", "Light brightness (relative radiance).");
+    changed |= sliderDouble("ambient", l.ambient, 0.0, 1.0, "%.2f",
+                            "Global ambient term, never shadowed. Keep it low: a strong ambient term reveals "
+                            "projection aliasing that diffuse lighting hides (thesis 6.2, 9.4.1).");
+    ImGui::BeginDisabled(l.source != LightSource::Sun);
+    changed |= checkbox("animate sun", l.animateSun,
+                        "Turn the sun around the scene with the scene clock (Animation panel), to see the methods "
+                        "cope with every light angle, including light behind the viewer (thesis 7.2.2, 8.3).");
+    changed |= sliderDouble("sun speed", l.sunDegreesPerSecond, -90.0, 90.0, "%.1f deg/s",
+                            "Degrees of azimuth per second of scene time.");
+    ImGui::EndDisabled();
+    return changed;
+}
+
+bool drawCameraPanel(Settings& s, const Scene& scene) {
+    bool changed = false;
+    CameraSettings& c = s.camera;
+    changed |= sliderDouble("fov y", c.fovYDeg, 5.0, 150.0, "%.1f deg",
+                            "Vertical field of view. Wide angles make perspective aliasing worse (thesis 3.1, 8.2.1).");
+    const double farLimit = std::max(c.farPlane * 10.0, 1e4);
+    if (sliderDouble("near", c.nearPlane, 1e-4, std::max(1e-3, c.farPlane * 0.5), "%.4g",
+                     "Camera near plane z_n. It enters n_opt = z_n + sqrt(z_n z_f) (thesis eq. 9.1, 9.2.5): a "
+                     "smaller z_n warps more. Log scale.",
+                     ImGuiSliderFlags_Logarithmic)) {
+        changed = true;
+        c.farPlane = std::max(c.farPlane, c.nearPlane * 1.01);
+    }
+    if (sliderDouble("far", c.farPlane, std::max(c.nearPlane * 1.01, 1e-3), farLimit, "%.4g",
+                     "Camera far plane z_f: bounds V and hence B (thesis 4.2, 9.2.5). Log scale.",
+                     ImGuiSliderFlags_Logarithmic)) {
+        changed = true;
+    }
+    changed |= sliderDouble("speed", c.moveSpeed, 0.05, 1000.0, "%.3g m/s",
+                            "Fly speed for W/A/S/D/Q/E (shift: 4x). Left drag looks, right drag orbits, wheel dollies.",
+                            ImGuiSliderFlags_Logarithmic);
+    ImGui::TextDisabled("pos (%.2f, %.2f, %.2f)  yaw %.1f  pitch %.1f", c.position.x, c.position.y, c.position.z,
+                        c.yawDeg, c.pitchDeg);
+    if (!scene.cameras.empty()) {
+        ImGui::TextUnformatted("presets (glTF cameras):");
+        ImGui::SameLine();
+        helpMarker("Jump to a camera of the glTF file (its position, direction, fov, near and far; roll is dropped).");
+        for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+            const Camera& cam = scene.cameras[i];
+            const std::string label = (cam.name.empty() ? "camera " + std::to_string(i) : cam.name) + "##cam" +
+                                      std::to_string(i);
+            if (i % 2 != 0) ImGui::SameLine();
+            if (ImGui::Button(label.c_str(), ImVec2(ImGui::GetContentRegionAvail().x * (i % 2 == 0 ? 0.5f : 1.0f) - 4.0f, 0))) {
+                c = cameraFromScene(cam, c);
+                changed = true;
+            }
+        }
+    }
+    return changed;
+}
+
+bool drawAnimationPanel(Settings& s, const AnimationInfo& info) {
+    bool changed = false;
+    AnimationSettings& a = s.animation;
+    if (ImGui::Button(a.playing ? "pause" : "play", ImVec2(70, 0))) {
+        a.playing = !a.playing;
+        changed = true;
+    }
+    tip("Play / pause the scene clock: glTF animations (the papers' dynamic scenes: moving casters re-render the "
+        "shadow map and move the scene bounds S, hence B) and the animated sun.");
+    ImGui::SameLine();
+    if (ImGui::Button("restart")) {
+        a.time = 0.0;
+        changed = true;
+    }
+    changed |= sliderDouble("speed##anim", a.speed, -4.0, 4.0, "%.2fx", "Playback rate of the scene clock.");
+    if (info.duration > 0.0) {
+        // Scrub inside the current loop; the clock itself keeps running so the sun keeps turning.
+        const double loops = std::floor(a.time / info.duration);
+        double inLoop = a.time - loops * info.duration;
+        if (sliderDouble("time", inLoop, 0.0, info.duration, "%.3f s",
+                         "Scrub the glTF animations (translation / rotation / scale channels; linear, step, "
+                         "cubic-spline interpolation). Saved with the view, so headless renders match.")) {
+            a.time = std::max(0.0, loops * info.duration + inLoop);
+            changed = true;
+        }
+        ImGui::TextDisabled("%d animation(s), %d channel(s), loop %.3f s", info.animations, info.channels,
+                            info.duration);
+    } else {
+        changed |= dragDouble("time", a.time, 0.05f, 0.0, 1e6, "%.2f s",
+                              "Scene clock (this scene has no glTF animation; it drives the animated sun).");
+    }
+    return changed;
+}
+
+bool drawOverlayPanel(Settings& s, ObserverView& observer) {
+    bool changed = false;
+    OverlaySettings& o = s.overlays;
+    changed |= checkbox("shadow map inset", o.shadowMapInset,
+                        "Show the shadow map's depth as an inset (near = dark). A warped map shows near geometry "
+                        "large (thesis Fig. 8.12, lower row).");
+    changed |= checkbox("light view inset", o.lightViewInset,
+                        "The scene in colour as the light sees it through the shadow matrix, i.e. the warped "
+                        "post-perspective space (thesis Fig. 8.1 right, 8.12), with the checked bodies drawn in.");
+    changed |= checkbox("observer inset", o.observerInset,
+                        "A third-person observer looking at the camera, its frustum and the bodies, as thesis Figs. "
+                        "4.2, 8.1 and 9.1 draw them.");
+    ImGui::TextUnformatted("wireframes:");
+    changed |= checkbox("B (violet)", o.drawB,
+                        "The intersection body B = ((V n S) + l) n S n L the map is focused on (thesis eq. 4.2, "
+                        "Fig. 4.2 right).");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
+    changed |= checkbox("V (blue)", o.drawV, "The view frustum V (thesis 4.2, Fig. 4.2).");
+    changed |= checkbox("S (green)", o.drawS, "The scene bounds S (thesis 4.2, Fig. 4.2).");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
+    changed |= checkbox("P (red)", o.drawP,
+                        "LiSPSM: the perspective frustum P and its projection centre C (thesis 8.1 Fig. 8.1, 9.2.4 "
+                        "Fig. 9.1); PSM: the post-perspective light mapped back, when finite. Spot lights also "
+                        "show their frustum L (orange).");
+    ImGui::BeginDisabled(!o.observerInset);
+    sliderDouble("observer yaw", observer.yawDeg, -180.0, 180.0, "%.0f deg",
+                 "Where the observer stands around the camera (viewer only, not saved).");
+    sliderDouble("observer pitch", observer.pitchDeg, -10.0, 89.0, "%.0f deg", "Observer height angle.");
+    sliderDouble("observer distance", observer.distance, 0.3, 5.0, "%.2fx", "Observer distance (x the framing distance).");
+    ImGui::EndDisabled();
+    return changed;
+}
+
+bool drawComparePanel(Settings& s) {
+    bool changed = false;
+    CompareSettings& c = s.compare;
+    if (c.methods.size() < 3) c.methods.resize(3, ShadowMethod::Lispsm);
+    changed |= ImGui::RadioButton("single", &c.count, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("2 views", &c.count, 2);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("3 views", &c.count, 3);
+    tip("Render the same camera and light with two or three methods side by side (thesis Figs. 8.10-8.12 "
+        "compare this way). The insets and read-outs follow the left view.");
+    ImGui::BeginDisabled(c.count < 2);
+    for (int i = 0; i < 3; ++i) {
+        ImGui::BeginDisabled(i >= c.count);
+        const std::string label = "view " + std::to_string(i + 1);
+        changed |= methodCombo(label.c_str(), c.methods[std::size_t(i)], "Method of this split view.");
+        ImGui::EndDisabled();
+    }
+    ImGui::EndDisabled();
+    return changed;
+}
+
+ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
+    ViewStateRequests r;
+    ImGui::InputText("file", ui.file, sizeof ui.file);
+    tip("The view state JSON: camera, light, method and every parameter. Exactly the file `shadowlab render "
+        "--view FILE` and `shadowlab --view FILE` take, so any screenshot can be reproduced headless.");
+    r.save = ImGui::Button("save view");
+    ImGui::SameLine();
+    r.load = ImGui::Button("load view");
+    ImGui::SameLine();
+    r.screenshot = ImGui::Button("screenshot (F12)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png (window with panels) in the working directory.");
+    return r;
+}
+
+float controlWindowWidth() { return kControlWidth; }
+
+ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float width, float height) {
+    ControlResult result;
+    ImGui::SetNextWindowPos(ImVec2(width - kControlWidth, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(kControlWidth, height), ImGuiCond_Always);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    if (!ImGui::Begin("shadowlab controls", nullptr, flags)) {
+        ImGui::End();
+        return result;
+    }
+    ImGui::PushItemWidth(kControlWidth * 0.5f);
+    static const FrameStats kNoStats{};
+    const FrameStats& stats = ctx.stats ? *ctx.stats : kNoStats;
+    static const Scene kNoScene{};
+    const Scene& scene = ctx.scene ? *ctx.scene : kNoScene;
+    static ObserverView localObserver;
+    static ViewStateUi localViewState;
+
+    if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) result.changed |= drawMethodPanel(s, stats);
+    if (ImGui::CollapsingHeader("LiSPSM", s.method == ShadowMethod::Lispsm ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+        result.changed |= drawLispsmPanel(s, stats.shadow);
+    if (ImGui::CollapsingHeader("PSM")) result.changed |= drawPsmPanel(s, stats.shadow);
+    if (ImGui::CollapsingHeader("Bias")) result.changed |= drawBiasPanel(s);
+    if (ImGui::CollapsingHeader("Filter & blur")) result.changed |= drawFilterPanel(s);
+    if (ImGui::CollapsingHeader("Light")) result.changed |= drawLightPanel(s, scene);
+    if (ImGui::CollapsingHeader("Camera")) result.changed |= drawCameraPanel(s, scene);
+    if (ImGui::CollapsingHeader("Animation")) result.changed |= drawAnimationPanel(s, ctx.animation);
+    if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen))
+        result.changed |= drawOverlayPanel(s, ctx.observer ? *ctx.observer : localObserver);
+    if (ImGui::CollapsingHeader("Split compare")) result.changed |= drawComparePanel(s);
+    if (ImGui::CollapsingHeader("View state", ImGuiTreeNodeFlags_DefaultOpen))
+        result.requests = drawViewStatePanel(ctx.viewState ? *ctx.viewState : localViewState);
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return result;
+}
+
+void drawCaptions(const std::vector<Caption>& captions) {
+    ImDrawList* list = ImGui::GetBackgroundDrawList();
+    for (const Caption& c : captions) {
+        const ImVec2 size = ImGui::CalcTextSize(c.text.c_str());
+        list->AddRectFilled(ImVec2(c.x, c.y), ImVec2(c.x + size.x + 8.0f, c.y + size.y + 4.0f), IM_COL32(0, 0, 0, 170));
+        list->AddText(ImVec2(c.x + 4.0f, c.y + 2.0f), IM_COL32(255, 255, 255, 255), c.text.c_str());
+    }
+}
+
+}  // namespace shadowlab::ui

@@ -1,0 +1,89 @@
+#pragma once
+// The viewer's parameter panels. Each is one small function that edits the shared Settings
+// struct (the same struct --view JSON and --set fill) and reads plain data: frame stats, the shadow
+// diagnostics, the scene model. No GL include reaches here; the viewer turns the edited settings
+// into frames. Every function returns true when it changed a setting.
+#include "frame_stats.h"
+#include "scenes/scene.h"
+#include "settings/settings.h"
+
+#include <string>
+#include <vector>
+
+namespace shadowlab::ui {
+
+// Method panel: SSM (focused / unfocused), PSM, LiSPSM; shadows on/off; shadow map resolution.
+bool drawMethodPanel(Settings& settings, const FrameStats& stats);
+// LiSPSM panel (thesis 9.2.5, 9.2.6): virtual z_f (log slider) or auto, body vector, n override;
+// read-outs n, n_opt (real and virtual far), gamma, d, z0, z1.
+bool drawLispsmPanel(Settings& settings, const ShadowDiagnostics& diagnostics);
+// PSM panel (Stamminger & Drettakis 3, 4.2; thesis 7.2): read-outs of the move-back distance,
+// the near-plane push and the light's kind in post-perspective space.
+bool drawPsmPanel(Settings& settings, const ShadowDiagnostics& diagnostics);
+// Bias panel (thesis ch. 5, 9.3): z-distribution, offset mode and parameters, back faces.
+bool drawBiasPanel(Settings& settings);
+// Filter & blur panel (thesis 4.3, 6.3, 9.4.2): nearest / PCF, blur, shadow-term-only view.
+bool drawFilterPanel(Settings& settings);
+// Light panel: the glTF lights, or a sun / spot by azimuth + elevation; the animated sun.
+bool drawLightPanel(Settings& settings, const Scene& scene);
+// Camera panel: fov, near, far, speed; the glTF cameras as presets.
+bool drawCameraPanel(Settings& settings, const Scene& scene);
+
+struct AnimationInfo {
+    double duration = 0.0;  // longest glTF animation, seconds (0: none)
+    int animations = 0;
+    int channels = 0;
+};
+// Animation panel: play / pause, speed, scrub (the scene clock also drives the animated sun).
+bool drawAnimationPanel(Settings& settings, const AnimationInfo& info);
+
+// The third-person observer of the overlay inset (viewer-local, not part of the view state).
+struct ObserverView {
+    double yawDeg = 35.0;     // around the view frustum, relative to the camera's back
+    double pitchDeg = 35.0;   // above the horizon
+    double distance = 1.0;    // x the distance that frames V, B and the camera
+};
+// Overlays panel: the insets (shadow map depth, light view, observer) and which of B, V, S, P
+// their wireframes show.
+bool drawOverlayPanel(Settings& settings, ObserverView& observer);
+// Split compare: 1-3 views side by side with synchronised camera and light.
+bool drawComparePanel(Settings& settings);
+
+struct ViewStateRequests {
+    bool save = false;
+    bool load = false;
+    bool screenshot = false;
+};
+struct ViewStateUi {
+    char file[512] = "view.json";
+};
+// View state panel: save / load the JSON that `shadowlab render --view` takes; screenshot.
+ViewStateRequests drawViewStatePanel(ViewStateUi& ui);
+
+// Everything the control window shows besides Settings.
+struct ControlContext {
+    const FrameStats* stats = nullptr;
+    const Scene* scene = nullptr;
+    AnimationInfo animation;
+    ObserverView* observer = nullptr;
+    ViewStateUi* viewState = nullptr;
+};
+struct ControlResult {
+    bool changed = false;
+    ViewStateRequests requests;
+};
+// The control window (right edge of a `width` x `height` framebuffer): every panel above as a
+// collapsing section.
+ControlResult drawControlWindow(Settings& settings, const ControlContext& context, float width, float height);
+
+// Width of the control window, so the viewer keeps its 3D views and insets out from under it.
+float controlWindowWidth();
+
+// A caption drawn over the 3D image (compare views, insets), behind the ImGui windows.
+struct Caption {
+    float x = 0, y = 0;  // top-left, framebuffer pixels from the top-left corner
+    std::string text;
+};
+void drawCaptions(const std::vector<Caption>& captions);
+
+}  // namespace shadowlab::ui

@@ -1,0 +1,73 @@
+#include "widgets.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace shadowlab::ui {
+
+namespace {
+
+void tooltipText(const char* text) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+}  // namespace
+
+void helpMarker(const char* text) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) tooltipText(text);
+}
+
+void tip(const char* text) {
+    if (!text || !*text) return;
+    if (ImGui::IsItemHovered()) tooltipText(text);
+    helpMarker(text);
+}
+
+bool sliderDouble(const char* label, double& value, double min, double max, const char* format, const char* tooltip,
+                  ImGuiSliderFlags flags) {
+    const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
+    tip(tooltip);
+    return changed;
+}
+
+bool dragDouble(const char* label, double& value, float speed, double min, double max, const char* format,
+                const char* tooltip, ImGuiSliderFlags flags) {
+    const bool changed = ImGui::DragScalar(label, ImGuiDataType_Double, &value, speed, &min, &max, format, flags);
+    tip(tooltip);
+    return changed;
+}
+
+bool checkbox(const char* label, bool& value, const char* tooltip) {
+    const bool changed = ImGui::Checkbox(label, &value);
+    tip(tooltip);
+    return changed;
+}
+
+bool sliderInt(const char* label, int& value, int min, int max, const char* tooltip) {
+    const bool changed = ImGui::SliderInt(label, &value, min, max, "%d", ImGuiSliderFlags_AlwaysClamp);
+    tip(tooltip);
+    return changed;
+}
+
+void readout(const char* label, const std::string& value, const char* tooltip) {
+    ImGui::TextUnformatted(label);
+    ImGui::SameLine(ImGui::GetFontSize() * 11.0f);
+    ImGui::TextUnformatted(value.c_str());
+    if (ImGui::IsItemHovered() && tooltip) tooltipText(tooltip);
+    if (tooltip) helpMarker(tooltip);
+}
+
+std::string formatNumber(double value, int precision) {
+    if (!std::isfinite(value)) return std::isnan(value) ? "n/a" : (value > 0 ? "+inf" : "-inf");
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*g", precision, value);
+    return buf;
+}
+
+}  // namespace shadowlab::ui
