@@ -140,9 +140,15 @@ struct SpotFrustum {
 };
 SpotFrustum spotFrustum(const ShadowLight& light, const Aabb& sceneBounds);
 
-// B = ((V n S) + l) n S n L (thesis eq. 4.2, 9.2.2). `viewProjection` is the camera's (any far
-// plane, e.g. the virtual one). Empty when nothing visible is lit.
-ConvexBody intersectionBody(const glm::dmat4& viewProjection, const ShadowLight& light, const Aabb& sceneBounds);
+// The view frustum V as a body, built from its corners (more precise than inverting the
+// view-projection for far/near ratios of 1e6).
+ConvexBody frustumBody(const ViewFrustum& view);
+
+// B = ((V n S) + l) n S n L (thesis eq. 4.2, 9.2.2), for V = `view` (any far plane, e.g. the
+// virtual one). Empty when nothing visible is lit. `visibleLit`, when given, receives L n V n S
+// (the body thesis 9.2.3 takes e_world from).
+ConvexBody intersectionBody(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
+                            ConvexBody* visibleLit = nullptr);
 
 // n_opt for directional lights, thesis eq. 8.11; returns +infinity for sin(gamma) == 0.
 double lispsmNOptDirectional(double zNear, double d, double sinGamma);

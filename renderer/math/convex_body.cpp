@@ -1,0 +1,464 @@
+#include "math/convex_body.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+// Newell's method: a robust (twice-area-weighted) normal of a planar polygon, valid for any
+// vertex count and insensitive to collinear vertices.
+glm::dvec3 newellNormal(const Polygon& f) {
+    glm::dvec3 n{0.0};
+    const glm::dvec3 o = f[0];  // relative to a vertex: large world offsets do not cancel the sum
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        const glm::dvec3 a = f[i] - o, b = f[(i + 1) % f.size()] - o;
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return n;
+}
+
+double maxAbsComponent(const glm::dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+
+double faceExtent(const Polygon& f) {
+    Aabb b;
+    for (const auto& p : f) b.extend(p);
+    const glm::dvec3 e = b.extent();
+    return std::max({e.x, e.y, e.z});
+}
+
+// A face has a usable plane when its area is not negligible against its own extent squared.
+bool facePlane(const Polygon& f, glm::dvec4& plane) {
+    if (f.size() < 3) return false;
+    const glm::dvec3 n = newellNormal(f);
+    const double len = glm::length(n);
+    const double ext = faceExtent(f);
+    if (!(len > 1e-12 * ext * ext) || !std::isfinite(len)) return false;
+    const glm::dvec3 u = n / len;
+    glm::dvec3 c{0.0};
+    for (const auto& p : f) c += p;
+    c /= double(f.size());
+    plane = glm::dvec4(u, -glm::dot(u, c));
+    return true;
+}
+
+double bodyScale(const PolygonList& faces) {
+    double s = 0.0;
+    for (const auto& f : faces)
+        for (const auto& p : f) s = std::max(s, maxAbsComponent(p));
+    return s;
+}
+
+bool lexLess(const glm::dvec3& a, const glm::dvec3& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+}
+
+// The cut point of edge (a, b) with the plane, computed from the endpoints in a canonical
+// (lexicographic) order so the two faces sharing the edge get bit-identical points.
+glm::dvec3 cutPoint(glm::dvec3 a, glm::dvec3 b, double sa, double sb) {
+    if (lexLess(b, a)) {
+        std::swap(a, b);
+        std::swap(sa, sb);
+    }
+    const double t = sa / (sa - sb);
+    return a + t * (b - a);
+}
+
+// Convex polygon (counter-clockwise around `normal`) of coplanar points: Andrew's monotone
+// chain in a 2D basis of the plane; duplicates and collinear points are dropped.
+Polygon convexPolygonInPlane(const std::vector<glm::dvec3>& pts, const glm::dvec3& normal) {
+    if (pts.size() < 3) return {};
+    const glm::dvec3 n = glm::normalize(normal);
+    const glm::dvec3 helper = std::abs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 u = glm::normalize(glm::cross(helper, n));
+    const glm::dvec3 v = glm::cross(n, u);  // (u, v, n) right-handed: CCW in (u, v) is CCW around n
+    struct P2 {
+        double x, y;
+        std::size_t i;
+    };
+    std::vector<P2> q;
+    q.reserve(pts.size());
+    const glm::dvec3 o = pts[0];
+    double ext = 0.0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const glm::dvec3 d = pts[i] - o;
+        q.push_back({glm::dot(d, u), glm::dot(d, v), i});
+        ext = std::max({ext, std::abs(q.back().x), std::abs(q.back().y)});
+    }
+    if (!(ext > 0.0)) return {};
+    std::sort(q.begin(), q.end(), [](const P2& a, const P2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    const double tol = 1e-12 * ext * ext;  // cross products below this are "collinear"
+    auto cross = [](const P2& o2, const P2& a, const P2& b) {
+        return (a.x - o2.x) * (b.y - o2.y) - (a.y - o2.y) * (b.x - o2.x);
+    };
+    std::vector<P2> hull(2 * q.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], q[i]) <= tol) --k;
+        hull[k++] = q[i];
+    }
+    for (std::size_t i = q.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(hull[k - 2], hull[k - 1], q[i]) <= tol) --k;
+        hull[k++] = q[i];
+    }
+    if (k < 4) return {};  // fewer than 3 distinct corners (the last equals the first)
+    Polygon out;
+    out.reserve(k - 1);
+    for (std::size_t i = 0; i + 1 < k; ++i) out.push_back(pts[hull[i].i]);
+    return out;
+}
+
+void removeDegenerateFaces(PolygonList& faces) {
+    for (auto& f : faces) {
+        // Drop exact consecutive duplicates (e.g. a cut point equal to a vertex).
+        Polygon g;
+        g.reserve(f.size());
+        for (const auto& p : f)
+            if (g.empty() || p != g.back()) g.push_back(p);
+        while (g.size() > 1 && g.front() == g.back()) g.pop_back();
+        f = std::move(g);
+    }
+    glm::dvec4 plane;
+    faces.erase(std::remove_if(faces.begin(), faces.end(), [&](const Polygon& f) { return !facePlane(f, plane); }),
+                faces.end());
+}
+
+void orientOutward(PolygonList& faces) {
+    glm::dvec3 c{0.0};
+    std::size_t count = 0;
+    for (const auto& f : faces)
+        for (const auto& p : f) {
+            c += p;
+            ++count;
+        }
+    if (count == 0) return;
+    c /= double(count);
+    for (auto& f : faces) {
+        glm::dvec3 fc{0.0};
+        for (const auto& p : f) fc += p;
+        fc /= double(f.size());
+        if (glm::dot(newellNormal(f), fc - c) < 0.0) std::reverse(f.begin(), f.end());
+    }
+}
+
+// Shared by hullWithPoint and extrude: is the plane through `a`, `b` with normal `n` a
+// supporting plane of all `verts` (all on the non-positive side within `eps`)?
+bool supports(const glm::dvec3& n, const glm::dvec3& a, const std::vector<glm::dvec3>& verts, double eps) {
+    for (const auto& p : verts)
+        if (glm::dot(n, p - a) > eps) return false;
+    return true;
+}
+
+}  // namespace
+
+ConvexBody ConvexBody::fromFrustum(const glm::dmat4& inv) {
+    std::array<glm::dvec3, 8> c;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec4 ndc{(i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0, 1.0};
+        const glm::dvec4 h = inv * ndc;
+        c[std::size_t(i)] = glm::dvec3(h) / h.w;
+    }
+    // Corner index bits: x = 1, y = 2, z = 4.
+    PolygonList faces = {
+        {c[0], c[2], c[3], c[1]},  // near  (z = -1)
+        {c[4], c[5], c[7], c[6]},  // far   (z = +1)
+        {c[0], c[4], c[6], c[2]},  // left  (x = -1)
+        {c[1], c[3], c[7], c[5]},  // right (x = +1)
+        {c[0], c[1], c[5], c[4]},  // bottom
+        {c[2], c[6], c[7], c[3]},  // top
+    };
+    removeDegenerateFaces(faces);
+    orientOutward(faces);
+    return ConvexBody(std::move(faces));
+}
+
+ConvexBody ConvexBody::fromAabb(const Aabb& box) {
+    if (box.empty()) return {};
+    std::array<glm::dvec3, 8> c;
+    for (int i = 0; i < 8; ++i) c[std::size_t(i)] = box.corner(i);
+    // Counter-clockwise seen from outside by construction (a flat box has no inside to test).
+    PolygonList faces = {
+        {c[0], c[4], c[6], c[2]},  // -x
+        {c[1], c[3], c[7], c[5]},  // +x
+        {c[0], c[1], c[5], c[4]},  // -y
+        {c[2], c[6], c[7], c[3]},  // +y
+        {c[0], c[2], c[3], c[1]},  // -z
+        {c[4], c[5], c[7], c[6]},  // +z
+    };
+    removeDegenerateFaces(faces);  // zero-thickness boxes keep their two large faces
+    return ConvexBody(std::move(faces));
+}
+
+std::vector<glm::dvec3> ConvexBody::vertices() const {
+    std::vector<glm::dvec3> v;
+    for (const auto& f : faces_) v.insert(v.end(), f.begin(), f.end());
+    std::sort(v.begin(), v.end(), lexLess);
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+}
+
+Aabb ConvexBody::bounds() const {
+    Aabb b;
+    for (const auto& f : faces_)
+        for (const auto& p : f) b.extend(p);
+    return b;
+}
+
+double ConvexBody::volume() const {
+    if (faces_.empty()) return 0.0;
+    const glm::dvec3 o = faces_[0][0];
+    double v = 0.0;
+    for (const auto& f : faces_)
+        for (std::size_t i = 1; i + 1 < f.size(); ++i)
+            v += glm::dot(f[0] - o, glm::cross(f[i] - o, f[i + 1] - o));
+    return std::max(0.0, v / 6.0);
+}
+
+std::vector<glm::dvec4> ConvexBody::planes() const {
+    std::vector<glm::dvec4> out;
+    out.reserve(faces_.size());
+    glm::dvec4 p;
+    for (const auto& f : faces_)
+        if (facePlane(f, p)) out.push_back(p);
+    return out;
+}
+
+bool ConvexBody::contains(const glm::dvec3& p, double tolerance) const {
+    if (faces_.empty()) return false;
+    for (const auto& pl : planes())
+        if (glm::dot(glm::dvec3(pl), p) + pl.w > tolerance) return false;
+    return true;
+}
+
+void ConvexBody::clip(const glm::dvec4& planeIn) {
+    if (faces_.empty()) return;
+    const double len = glm::length(glm::dvec3(planeIn));
+    if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(planeIn.w)) return;  // no plane: nothing to cut
+    const glm::dvec4 plane = planeIn / len;
+    const glm::dvec3 n{plane};
+    // "On the plane" tolerance, relative to the coordinates involved (rounding scales with them).
+    const double eps = 1e-11 * (bodyScale(faces_) + std::abs(plane.w)) + 1e-300;
+
+    bool anyOutside = false, anyInside = false;
+    for (const auto& f : faces_)
+        for (const auto& p : f) {
+            const double s = glm::dot(n, p) + plane.w;
+            anyOutside |= s > eps;
+            anyInside |= s < -eps;
+        }
+    if (!anyOutside) return;  // nothing beyond the plane (vertices on it are kept)
+    if (!anyInside) {
+        // At most touching the plane: what survives is the (flat) part lying in it, e.g. the
+        // intersection with a zero-thickness box. It becomes a flat body: the polygon twice,
+        // facing both ways.
+        std::vector<glm::dvec3> on;
+        for (const auto& f : faces_)
+            for (const auto& p : f)
+                if (std::abs(glm::dot(n, p) + plane.w) <= eps) on.push_back(p);
+        Polygon cap = convexPolygonInPlane(on, n);
+        faces_.clear();
+        if (cap.size() >= 3) {
+            Polygon back(cap.rbegin(), cap.rend());
+            faces_.push_back(std::move(cap));
+            faces_.push_back(std::move(back));
+        }
+        return;
+    }
+
+    PolygonList out;
+    out.reserve(faces_.size() + 1);
+    std::vector<glm::dvec3> capPoints;
+    std::vector<double> s;
+    for (const auto& f : faces_) {
+        s.resize(f.size());
+        bool fOut = false, fIn = false;
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            s[i] = glm::dot(n, f[i]) + plane.w;
+            fOut |= s[i] > eps;
+            fIn |= s[i] < -eps;
+            if (std::abs(s[i]) <= eps) capPoints.push_back(f[i]);
+        }
+        if (!fOut) {
+            out.push_back(f);
+            continue;
+        }
+        if (!fIn) continue;  // entirely beyond (or on) the plane
+        Polygon g;
+        g.reserve(f.size() + 2);
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            const std::size_t j = (i + 1) % f.size();
+            if (s[i] <= eps) g.push_back(f[i]);
+            if ((s[i] < -eps && s[j] > eps) || (s[i] > eps && s[j] < -eps)) {
+                const glm::dvec3 c = cutPoint(f[i], f[j], s[i], s[j]);
+                g.push_back(c);
+                capPoints.push_back(c);
+            }
+        }
+        out.push_back(std::move(g));
+    }
+    // Close the hole: the cut points all lie in the plane; the cap faces out along n.
+    Polygon cap = convexPolygonInPlane(capPoints, n);
+    if (cap.size() >= 3) out.push_back(std::move(cap));
+    removeDegenerateFaces(out);
+    faces_ = std::move(out);
+}
+
+void ConvexBody::clip(const ConvexBody& other) {
+    if (other.empty()) {
+        faces_.clear();
+        return;
+    }
+    for (const auto& p : other.planes()) {
+        clip(p);
+        if (faces_.empty()) return;
+    }
+}
+
+void ConvexBody::clip(const Aabb& box) {
+    if (box.empty()) {
+        faces_.clear();
+        return;
+    }
+    const glm::dvec4 planes[6] = {{1, 0, 0, -box.max.x}, {-1, 0, 0, box.min.x}, {0, 1, 0, -box.max.y},
+                                  {0, -1, 0, box.min.y}, {0, 0, 1, -box.max.z}, {0, 0, -1, box.min.z}};
+    for (const auto& p : planes) {
+        clip(p);
+        if (faces_.empty()) return;
+    }
+}
+
+void ConvexBody::hullWithPoint(const glm::dvec3& q) {
+    if (faces_.empty()) return;
+    const double eps = 1e-11 * (bodyScale(faces_) + maxAbsComponent(q)) + 1e-300;
+    const std::vector<glm::dvec3> verts = vertices();
+    PolygonList kept, onPlane;
+    std::vector<glm::dvec3> onNormals;
+    bool anyFront = false;
+    for (const auto& f : faces_) {
+        glm::dvec4 pl;
+        if (!facePlane(f, pl)) continue;
+        const double s = glm::dot(glm::dvec3(pl), q) + pl.w;
+        if (s > eps) {
+            anyFront = true;  // front-facing the point: removed (thesis 9.2.2)
+        } else if (s >= -eps) {
+            onPlane.push_back(f);  // q lies in this face's plane: the face grows to include q
+            onNormals.push_back(glm::dvec3(pl));
+        } else {
+            kept.push_back(f);
+        }
+    }
+    if (!anyFront) return;  // q inside or on the body
+    PolygonList out = kept;
+    // Faces coplanar with q become the 2D hull of the face and q.
+    for (std::size_t i = 0; i < onPlane.size(); ++i) {
+        std::vector<glm::dvec3> pts = onPlane[i];
+        pts.push_back(q);
+        Polygon g = convexPolygonInPlane(pts, onNormals[i]);
+        if (g.size() >= 3) out.push_back(std::move(g));
+    }
+    // Fan the silhouette to q: an edge of a remaining face bounds the new fan iff the triangle
+    // (b, a, q) lies in a supporting plane of body + q (geometric test: robust to T-junctions).
+    auto addFan = [&](const Polygon& f) {
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            const glm::dvec3 a = f[i], b = f[(i + 1) % f.size()];
+            Polygon tri{b, a, q};
+            glm::dvec4 pl;
+            if (!facePlane(tri, pl)) continue;
+            const glm::dvec3 n{pl};
+            bool coplanarWithGrown = false;
+            for (const auto& on : onNormals) coplanarWithGrown |= glm::dot(on, n) > 1.0 - 1e-9;
+            if (coplanarWithGrown) continue;
+            if (supports(n, a, verts, eps)) out.push_back(std::move(tri));
+        }
+    };
+    for (const auto& f : kept) addFan(f);
+    for (const auto& f : onPlane) addFan(f);
+    removeDegenerateFaces(out);
+    faces_ = std::move(out);
+}
+
+void ConvexBody::extrude(const glm::dvec3& directionIn, const Aabb& box) {
+    if (faces_.empty() || box.empty()) return;
+    const double dl = glm::length(directionIn);
+    if (!(dl > 0.0) || !std::isfinite(dl)) return;
+    const glm::dvec3 u = directionIn / dl;
+    const std::vector<glm::dvec3> verts = vertices();
+    // Far enough that the moved faces lie beyond the box along u (the caller clips by it).
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& p : verts) lo = std::min(lo, glm::dot(p, u));
+    for (int i = 0; i < 8; ++i) hi = std::max(hi, glm::dot(box.corner(i), u));
+    const double length = hi - lo;
+    if (!(length > 0.0)) return;  // the body is already beyond the box along u
+    const glm::dvec3 shift = length * u;
+    const double eps = 1e-11 * (bodyScale(faces_) + maxAbsComponent(shift)) + 1e-300;
+
+    PolygonList out, back, parallel;
+    std::vector<glm::dvec3> parallelNormals;
+    for (const auto& f : faces_) {
+        glm::dvec4 pl;
+        if (!facePlane(f, pl)) continue;
+        const double c = glm::dot(glm::dvec3(pl), u);
+        if (c > 1e-9) {  // facing along u (toward the light): moved (thesis 9.2.2)
+            Polygon g = f;
+            for (auto& p : g) p += shift;
+            out.push_back(std::move(g));
+        } else if (c >= -1e-9) {  // parallel to u: the face sweeps into a longer face
+            std::vector<glm::dvec3> pts = f;
+            for (const auto& p : f) pts.push_back(p + shift);
+            Polygon g = convexPolygonInPlane(pts, glm::dvec3(pl));
+            if (g.size() >= 3) out.push_back(std::move(g));
+            parallelNormals.push_back(glm::dvec3(pl));
+            parallel.push_back(f);
+        } else {
+            out.push_back(f);
+            back.push_back(f);
+        }
+    }
+    // Fill the sides with quads along the silhouette edges of the faces that stay.
+    auto addQuads = [&](const Polygon& f) {
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            const glm::dvec3 a = f[i], b = f[(i + 1) % f.size()];
+            Polygon quad{b, a, a + shift, b + shift};
+            glm::dvec4 pl;
+            if (!facePlane(quad, pl)) continue;
+            const glm::dvec3 n{pl};
+            bool coplanar = false;
+            for (const auto& pn : parallelNormals) coplanar |= glm::dot(pn, n) > 1.0 - 1e-9;
+            if (coplanar) continue;
+            if (supports(n, a, verts, eps)) out.push_back(std::move(quad));
+        }
+    };
+    for (const auto& f : back) addQuads(f);
+    removeDegenerateFaces(out);
+    faces_ = std::move(out);
+}
+
+ConvexBody ConvexBody::transformed(const glm::dmat4& m, double wEpsilon) const {
+    ConvexBody src = *this;
+    // w(p) = row3 . (p, 1) >= wEpsilon  <=>  -row3.xyz . p + (wEpsilon - row3.w) <= 0.
+    const glm::dvec4 row3{m[0][3], m[1][3], m[2][3], m[3][3]};
+    src.clip(glm::dvec4(-glm::dvec3(row3), wEpsilon - row3.w));
+    const bool flip = glm::determinant(m) < 0.0;  // the map's Jacobian has the sign of det(m)
+    PolygonList out;
+    out.reserve(src.faces_.size());
+    for (const auto& f : src.faces_) {
+        Polygon g;
+        g.reserve(f.size());
+        for (const auto& p : f) {
+            const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+            g.push_back(glm::dvec3(h) / std::max(h.w, wEpsilon));
+        }
+        if (flip) std::reverse(g.begin(), g.end());
+        out.push_back(std::move(g));
+    }
+    removeDegenerateFaces(out);
+    return ConvexBody(std::move(out));
+}
+
+}  // namespace shadowlab
