@@ -139,7 +139,7 @@ void buildChessboard(GltfBuilder& builder, const GenerateOptions&) {
 
     // The spot light high to one side, aimed at the board's centre.
     const glm::dvec3 spotPosition(-6.0, 9.0, 5.0);
-    const int spot = builder.addSpotLight("Spot", {1.0, 0.95, 0.85}, 800.0, 40.0, 28.0 * kDegree, 35.0 * kDegree);
+    const int spot = builder.addSpotLight("Spot", {1.0, 0.95, 0.85}, 800.0, 40.0, 32.0 * kDegree, 40.0 * kDegree);
     builder.addLightNode("Spot", spot, spotPosition, glm::dvec3(0.0, kTop, 0.0) - spotPosition);
 
     struct Preset {

@@ -12,7 +12,14 @@ namespace shadowlab::scenegen {
 
 namespace {
 
-double roundTo(double value, double step) { return std::round(value / step) * step; }
+// Rounds to `decimals` places so the JSON carries short numbers ("9.4072", not
+// "9.407200000000001"): an integer divided by a power of ten is the nearest double to the
+// decimal, which the writer prints in its shortest form.
+double roundTo(double value, int decimals) {
+    const double factor = std::pow(10.0, decimals);
+    const double r = std::round(value * factor) / factor;
+    return r == 0.0 ? 0.0 : r;  // no "-0.0"
+}
 
 glm::dmat4 localMatrix(const tinygltf::Node& node) {
     glm::dmat4 m(1.0);
@@ -47,9 +54,11 @@ GltfBuilder::GltfBuilder(const std::string& generatorDescription) {
 int GltfBuilder::addMaterial(const std::string& name, glm::vec4 baseColor, float roughness) {
     tinygltf::Material m;
     m.name = name;
-    m.pbrMetallicRoughness.baseColorFactor = {baseColor.r, baseColor.g, baseColor.b, baseColor.a};
+    // Colours are given as float literals; 0.8f written as a double would read 0.800000011920929.
+    m.pbrMetallicRoughness.baseColorFactor = {roundTo(baseColor.r, 4), roundTo(baseColor.g, 4), roundTo(baseColor.b, 4),
+                                              roundTo(baseColor.a, 4)};
     m.pbrMetallicRoughness.metallicFactor = 0.0;
-    m.pbrMetallicRoughness.roughnessFactor = roughness;
+    m.pbrMetallicRoughness.roughnessFactor = roundTo(roughness, 4);
     model_.materials.push_back(m);
     return int(model_.materials.size()) - 1;
 }
@@ -137,7 +146,7 @@ int GltfBuilder::addDirectionalLight(const std::string& name, glm::dvec3 color, 
     tinygltf::Light light;
     light.name = name;
     light.type = "directional";
-    light.color = {color.r, color.g, color.b};
+    light.color = {roundTo(color.r, 4), roundTo(color.g, 4), roundTo(color.b, 4)};
     light.intensity = intensity;
     model_.lights.push_back(light);
     return int(model_.lights.size()) - 1;
@@ -148,7 +157,7 @@ int GltfBuilder::addSpotLight(const std::string& name, glm::dvec3 color, double 
     tinygltf::Light light;
     light.name = name;
     light.type = "spot";
-    light.color = {color.r, color.g, color.b};
+    light.color = {roundTo(color.r, 4), roundTo(color.g, 4), roundTo(color.b, 4)};
     light.intensity = intensity;
     light.range = range;
     light.spot.innerConeAngle = innerCone;
@@ -161,13 +170,13 @@ int GltfBuilder::addNode(const std::string& name, const Transform& transform, in
     tinygltf::Node node;
     node.name = name;
     if (transform.translation != glm::dvec3(0.0))
-        node.translation = {roundTo(transform.translation.x, 1e-4), roundTo(transform.translation.y, 1e-4),
-                            roundTo(transform.translation.z, 1e-4)};
+        node.translation = {roundTo(transform.translation.x, 4), roundTo(transform.translation.y, 4),
+                            roundTo(transform.translation.z, 4)};
     const glm::dquat& q = transform.rotation;
     if (q != glm::dquat(1.0, 0.0, 0.0, 0.0))
-        node.rotation = {roundTo(q.x, 1e-7), roundTo(q.y, 1e-7), roundTo(q.z, 1e-7), roundTo(q.w, 1e-7)};
+        node.rotation = {roundTo(q.x, 7), roundTo(q.y, 7), roundTo(q.z, 7), roundTo(q.w, 7)};
     if (transform.scale != glm::dvec3(1.0))
-        node.scale = {roundTo(transform.scale.x, 1e-4), roundTo(transform.scale.y, 1e-4), roundTo(transform.scale.z, 1e-4)};
+        node.scale = {roundTo(transform.scale.x, 4), roundTo(transform.scale.y, 4), roundTo(transform.scale.z, 4)};
     model_.nodes.push_back(node);
     const int index = int(model_.nodes.size()) - 1;
     if (parent < 0)

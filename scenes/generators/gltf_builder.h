@@ -39,8 +39,8 @@ public:
     int addSpotLight(const std::string& name, glm::dvec3 color, double intensity, double range, double innerCone,
                      double outerCone);
 
-    // A node under `parent` (-1: a root of the scene). Translations are rounded to 0.1 mm and
-    // rotations to 1e-7 so the JSON stays short; the rounded values are what the stats use.
+    // A node under `parent` (-1: a root of the scene). Translations and scales are rounded to 0.1 mm,
+    // rotations to 1e-7, so the JSON stays short; the rounded values are what the stats use.
     int addNode(const std::string& name, const Transform& transform, int parent = -1);
     void setMesh(int node, int mesh) { model_.nodes[std::size_t(node)].mesh = mesh; }
     void setCamera(int node, int camera) { model_.nodes[std::size_t(node)].camera = camera; }

@@ -71,8 +71,9 @@ int main(int argc, char** argv) {
     }
     const auto& s = result.stats;
     std::printf("wrote %s: %zu nodes, %zu mesh instances, %zu triangles, %zu meshes, %zu materials, %zu cameras, "
-                "%zu lights, %.1f MB in %.2f s\n",
+                "%zu lights, bounds (%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f), %.1f MB in %.2f s\n",
                 out.c_str(), s.nodes, s.meshInstances, s.triangles, s.meshes, s.materials, s.cameras, s.lights,
+                s.boundsMin.x, s.boundsMin.y, s.boundsMin.z, s.boundsMax.x, s.boundsMax.y, s.boundsMax.z,
                 double(s.fileBytes) / 1e6, seconds);
     return 0;
 }
