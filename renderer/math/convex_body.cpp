@@ -409,8 +409,11 @@ void ConvexBody::extrude(const glm::dvec3& directionIn, const Aabb& box) {
             for (auto& p : g) p += shift;
             out.push_back(std::move(g));
         } else if (c >= -1e-9) {  // parallel to u: the face sweeps into a longer face
+            // Sweep within the face's own plane (u is parallel only up to 1e-9), so flat bodies
+            // stay flat and a later clip by a zero-thickness box keeps them.
+            const glm::dvec3 inPlane = shift - glm::dot(shift, glm::dvec3(pl)) * glm::dvec3(pl);
             std::vector<glm::dvec3> pts = f;
-            for (const auto& p : f) pts.push_back(p + shift);
+            for (const auto& p : f) pts.push_back(p + inPlane);
             Polygon g = convexPolygonInPlane(pts, glm::dvec3(pl));
             if (g.size() >= 3) out.push_back(std::move(g));
             parallelNormals.push_back(glm::dvec3(pl));

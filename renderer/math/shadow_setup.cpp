@@ -68,9 +68,10 @@ struct Range {
         hi = std::max(hi, t);
     }
 };
-glm::dvec4 fitRow(const glm::dvec4& r, const glm::dvec4& w, Range range, bool reversed) {
-    // Flat ranges (zero-thickness bodies) get a tiny relative width so the matrix stays finite.
-    const double minWidth = 1e-9 * std::max(std::abs(range.lo), std::abs(range.hi)) + 1e-300;
+glm::dvec4 fitRow(const glm::dvec4& r, const glm::dvec4& w, Range range, bool reversed, double scale) {
+    // Flat ranges (zero-thickness bodies) get a small relative width so the matrix stays finite
+    // and well conditioned.
+    const double minWidth = 1e-6 * scale + 1e-9 * std::max(std::abs(range.lo), std::abs(range.hi)) + 1e-300;
     if (range.hi - range.lo < minWidth) {
         const double mid = 0.5 * (range.lo + range.hi);
         range.lo = mid - 0.5 * minWidth;
@@ -92,9 +93,13 @@ glm::dmat4 fitToPoints(const glm::dmat4& pre, const std::vector<glm::dvec3>& pts
         ry.add(h.y / h.w);
         rz.add(h.z / h.w);
     }
+    // A flat axis (zero-thickness B) gets a width relative to the other axes, so the fit's
+    // scale stays bounded and rounding in the composed matrix stays below the tolerance.
+    double scale = 0.0;
+    for (const Range* r : {&rx, &ry, &rz}) scale = std::max(scale, r->hi - r->lo);
     const glm::dvec4 w = row(pre, 3);
-    const glm::dmat4 fitted = fromRows(fitRow(row(pre, 0), w, rx, false), fitRow(row(pre, 1), w, ry, false),
-                                       fitRow(row(pre, 2), w, rz, depthReversed), w);
+    const glm::dmat4 fitted = fromRows(fitRow(row(pre, 0), w, rx, false, scale), fitRow(row(pre, 1), w, ry, false, scale),
+                                       fitRow(row(pre, 2), w, rz, depthReversed, scale), w);
     return fitted;
 }
 
@@ -400,6 +405,152 @@ NChoice chooseN(const LightSpace& ls, const std::vector<glm::dvec3>& body, const
 
 }  // namespace
 
+namespace {
+
+struct PsmResult {
+    bool ok = false;
+    glm::dmat4 matrix{1.0};
+    bool reverse = false;
+    double moveBack = 0.0, extraMoveBack = 0.0, zNear = 0.0, zFar = 0.0;
+    PostPerspectiveLight kind = PostPerspectiveLight::None;
+    glm::dvec3 lightWorld{0.0};
+    bool hasLightWorld = false;
+};
+
+// Perspective shadow maps (Stamminger & Drettakis). One attempt for a given virtual camera.
+bool psmAttempt(const ViewFrustum& view, const ViewBasis& basis, const ShadowLight& light, const glm::dvec3& l,
+                const std::vector<glm::dvec3>& bv, double moveBack, const Range& depth, double maxTan, PsmResult& r) {
+    // Section 4.2: the virtual camera moved back by `moveBack`; its near plane pushed as far as B
+    // allows (B's nearest depth), its far plane at B's far end.
+    ViewFrustum cam = view;
+    cam.eye = view.eye - basis.forward * moveBack;
+    cam.zNear = std::max(depth.lo + moveBack, view.zNear);
+    cam.zFar = std::max(depth.hi + moveBack, cam.zNear * (1.0 + 1e-9) + 1e-300);
+    r.moveBack = moveBack;
+    r.zNear = cam.zNear;
+    r.zFar = cam.zFar;
+    const glm::dmat4 Mc = cam.projectionMatrix() * cam.viewMatrix();
+    // B' in post-perspective space (w >= zNear > 0 for all of B).
+    std::vector<glm::dvec3> bp;
+    bp.reserve(bv.size());
+    glm::dvec3 centroid{0.0};
+    for (const auto& p : bv) {
+        bp.push_back(project(Mc, p));
+        centroid += bp.back();
+    }
+    centroid /= double(bp.size());
+    double radius = 0.0;
+    for (const auto& q : bp) radius = std::max(radius, glm::length(q - centroid));
+    // Section 3: the light in post-perspective space (homogeneous): a directional light is the
+    // point at infinity (-l, 0), a spot light its position.
+    const bool spot = light.kind == ShadowLightKind::Spot;
+    const glm::dvec4 lh = spot ? Mc * glm::dvec4(light.position, 1.0) : Mc * glm::dvec4(-l, 0.0);
+    const glm::dvec3 lxyz{lh};
+    r.hasLightWorld = false;
+    glm::dmat4 pre{1.0};
+    if (glm::length(lxyz - lh.w * centroid) > kPsmFarLight * std::max(radius, 1e-300) * std::abs(lh.w)) {
+        // Section 3.1: a light parallel to the image plane stays directional. It comes from
+        // +lxyz (the limit of lh.xyz - lh.w * b' as w -> 0) and travels along -lxyz.
+        r.kind = PostPerspectiveLight::Directional;
+        r.reverse = false;
+        const glm::dvec3 travel = -glm::normalize(lxyz);
+        const glm::dvec3 x = anyPerpendicular(travel), y = glm::cross(travel, x);
+        pre = fromRows({x, 0}, {y, 0}, {travel, 0}, {0, 0, 0, 1});  // image x, image y, depth
+        r.matrix = fitToPoints(pre * Mc, bv, false);
+        return finite(r.matrix) && minW(r.matrix, bv) > 0.0;
+    }
+    // Point light (w > 0) or inverted point light (w < 0: lights from behind, section 3.1/3.2:
+    // the rays converge, so the occluder is the hit farthest from the point: reversed test).
+    const glm::dvec3 pLight = lxyz / lh.w;
+    r.kind = lh.w > 0.0 ? PostPerspectiveLight::Point : PostPerspectiveLight::InvertedPoint;
+    r.reverse = lh.w < 0.0;
+    const glm::dvec4 wh = glm::inverse(Mc) * glm::dvec4(pLight, 1.0);
+    if (std::abs(wh.w) > 0.0 && finite(glm::dvec3(wh) / wh.w)) {
+        r.lightWorld = glm::dvec3(wh) / wh.w;
+        r.hasLightWorld = true;
+    }
+    // A perspective from pLight looking at B': all of B' in front, within atan(maxTan) of the axis.
+    auto tryAxis = [&](glm::dvec3 axis) {
+        const double len = glm::length(axis);
+        if (!(len > 0.0) || !std::isfinite(len)) return false;
+        axis /= len;
+        const glm::dvec3 x = anyPerpendicular(axis), y = glm::cross(axis, x);
+        double sMin = kInf, sMax = 0.0, tanMax = 0.0;
+        for (const auto& q : bp) {
+            const glm::dvec3 d = q - pLight;
+            const double sq = glm::dot(d, axis);
+            sMin = std::min(sMin, sq);
+            sMax = std::max(sMax, sq);
+            if (!(sq > 0.0)) return false;
+            tanMax = std::max({tanMax, std::abs(glm::dot(d, x)) / sq, std::abs(glm::dot(d, y)) / sq});
+        }
+        if (!(sMin > 1e-9 * sMax) || !(tanMax <= maxTan)) return false;
+        // Rows on post-perspective homogeneous coordinates (X, Y, Z, W): view-space x, y and the
+        // distance s along the axis (each times W); the depth source W / s = 1/s.
+        pre = fromRows({x, -glm::dot(x, pLight)}, {y, -glm::dot(y, pLight)}, {0, 0, 0, 1},
+                       {axis, -glm::dot(axis, pLight)});
+        return true;
+    };
+    std::vector<glm::dvec3> dirs;
+    dirs.reserve(bp.size());
+    glm::dvec3 mean{0.0};
+    for (const auto& q : bp) {
+        dirs.push_back(glm::normalize(q - pLight));
+        mean += dirs.back();
+    }
+    if (!tryAxis(centroid - pLight) && !tryAxis(mean)) {
+        // Wide sets of directions: a few subgradient steps toward the axis that maximizes the
+        // smallest cosine (the axis of the smallest enclosing cone).
+        glm::dvec3 axis = glm::length(mean) > 0.0 ? glm::normalize(mean) : dirs[0];
+        bool found = false;
+        for (int it = 0; it < 64 && !found; ++it) {
+            std::size_t worst = 0;
+            double worstDot = kInf;
+            for (std::size_t i = 0; i < dirs.size(); ++i) {
+                const double d = glm::dot(dirs[i], axis);
+                if (d < worstDot) {
+                    worstDot = d;
+                    worst = i;
+                }
+            }
+            axis = glm::normalize(axis + dirs[worst] * (1.0 / (1.0 + 0.25 * it)));
+            found = tryAxis(axis);
+        }
+        if (!found) return false;
+    }
+    // 1/s falls with distance: reversed fit, so the depth grows away from pLight.
+    r.matrix = fitToPoints(pre * Mc, bv, true);
+    return finite(r.matrix) && minW(r.matrix, bv) > 0.0;
+}
+
+PsmResult perspectiveShadowMap(const ViewFrustum& view, const ViewBasis& basis, const ShadowLight& light,
+                               const glm::dvec3& l, const std::vector<glm::dvec3>& bv) {
+    PsmResult r;
+    Range depth;
+    for (const auto& p : bv) depth.add(glm::dot(p - view.eye, basis.forward));
+    // Section 4.2: move back just enough that all of B is in front of the near plane.
+    const double required = std::max(0.0, view.zNear - depth.lo);
+    // When the post-perspective light then sees B' only through a (near) 180-degree frustum (a
+    // light close to the infinity plane with a huge far/near ratio), move back further: the
+    // parameterization degrades continuously toward the uniform map (section 4.2).
+    double extra = 0.0;
+    const double step = 0.05 * (depth.hi - depth.lo) + view.zNear;
+    constexpr double kMaxTan = 5.67;  // tan(80 deg): wider shadow frusta waste most of the map
+    for (int attempt = 0; attempt < 40; ++attempt) {
+        if (psmAttempt(view, basis, light, l, bv, required + extra, depth, kMaxTan, r)) {
+            r.ok = true;
+            r.extraMoveBack = extra;
+            return r;
+        }
+        extra = extra == 0.0 ? step : extra * 2.0;
+    }
+    // Wide spot cones need a wide frustum whatever the move-back: accept any angle below 90 deg.
+    r.ok = psmAttempt(view, basis, light, l, bv, required, depth, kInf, r);
+    return r;
+}
+
+}  // namespace
+
 ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
                                const ShadowParams& params) {
     ShadowSetup out;
@@ -581,81 +732,17 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         }
         case ShadowMethod::Psm: {
             diag.focused = true;
-            // Stamminger & Drettakis 4.2: move the camera back until all of B is in front of it;
-            // then push the near plane as far as B allows and the far plane to B's far end.
-            Range depth;
-            for (const auto& p : bv) depth.add(glm::dot(p - view.eye, basis.forward));
-            const double moveBack = std::max(0.0, view.zNear - depth.lo);
-            ViewFrustum cam = view;
-            cam.eye = view.eye - basis.forward * moveBack;
-            cam.zNear = std::max(depth.lo + moveBack, view.zNear);
-            cam.zFar = std::max(depth.hi + moveBack, cam.zNear * (1.0 + 1e-9) + 1e-300);
-            diag.psmMoveBack = moveBack;
-            diag.psmNear = cam.zNear;
-            diag.psmFar = cam.zFar;
-            const glm::dmat4 Mc = cam.projectionMatrix() * cam.viewMatrix();
-            // B' in post-perspective space (w >= zNear > 0 for all of B).
-            std::vector<glm::dvec3> bp;
-            bp.reserve(bv.size());
-            glm::dvec3 centroid{0.0};
-            for (const auto& p : bv) {
-                bp.push_back(project(Mc, p));
-                centroid += bp.back();
-            }
-            centroid /= double(bp.size());
-            double radius = 0.0;
-            for (const auto& q : bp) radius = std::max(radius, glm::length(q - centroid));
-            // Section 3: the light in post-perspective space (homogeneous).
-            const glm::dvec4 lh = spot ? Mc * glm::dvec4(light.position, 1.0) : Mc * glm::dvec4(-l, 0.0);
-            const glm::dvec3 lxyz{lh};
-            const bool toDirectional =
-                glm::length(lxyz - lh.w * centroid) > kPsmFarLight * std::max(radius, 1e-300) * std::abs(lh.w);
-            glm::dmat4 pre{1.0};
-            bool ok = true;
-            if (toDirectional) {
-                // Section 3.1: parallel to the image plane -> stays directional. The light comes
-                // from +lxyz (the limit of lh.xyz - lh.w * b' for w -> 0), so it travels along -lxyz.
-                diag.psmLightKind = PostPerspectiveLight::Directional;
-                const glm::dvec3 travel = -glm::normalize(lxyz);
-                const glm::dvec3 x = anyPerpendicular(travel), y = glm::cross(travel, x);
-                pre = fromRows({x, 0}, {y, 0}, {travel, 0}, {0, 0, 0, 1});  // image x, image y, depth
-                M = fitToPoints(pre * Mc, bv, false);
+            const PsmResult psm = perspectiveShadowMap(view, basis, light, l, bv);
+            diag.psmMoveBack = psm.moveBack;
+            diag.psmNear = psm.zNear;
+            diag.psmFar = psm.zFar;
+            diag.psmLightKind = psm.kind;
+            diag.projectionCenter = psm.lightWorld;
+            diag.hasProjectionCenter = psm.hasLightWorld;
+            if (psm.ok) {
+                M = psm.matrix;
+                reverse = psm.reverse;
             } else {
-                // Point light (w > 0) or inverted point light (w < 0, lights from behind).
-                const glm::dvec3 pLight = lxyz / lh.w;
-                diag.psmLightKind = lh.w > 0.0 ? PostPerspectiveLight::Point : PostPerspectiveLight::InvertedPoint;
-                reverse = lh.w < 0.0;
-                const glm::dvec4 wh = glm::inverse(Mc) * glm::dvec4(pLight, 1.0);
-                if (std::abs(wh.w) > 0.0 && finite(glm::dvec3(wh) / wh.w)) {
-                    diag.projectionCenter = glm::dvec3(wh) / wh.w;
-                    diag.hasProjectionCenter = true;
-                }
-                // A perspective from pLight looking at B': the axis must see all of B' in front.
-                auto tryAxis = [&](glm::dvec3 axis) {
-                    const double len = glm::length(axis);
-                    if (!(len > 0.0) || !std::isfinite(len)) return false;
-                    axis /= len;
-                    Range s;
-                    for (const auto& q : bp) s.add(glm::dot(q - pLight, axis));
-                    if (!(s.lo > 1e-9 * s.hi)) return false;
-                    const glm::dvec3 x = anyPerpendicular(axis), y = glm::cross(axis, x);
-                    // Rows on post-perspective homogeneous coordinates (X, Y, Z, W): view-space
-                    // x, y and distance s along the axis (each times W); depth source W / s = 1/s.
-                    const glm::dvec4 rx{x, -glm::dot(x, pLight)}, ry{y, -glm::dot(y, pLight)},
-                        rs{axis, -glm::dot(axis, pLight)};
-                    pre = fromRows(rx, ry, {0, 0, 0, 1}, rs);
-                    return true;
-                };
-                glm::dvec3 mean{0.0};
-                for (const auto& q : bp) mean += glm::normalize(q - pLight);
-                if (tryAxis(centroid - pLight) || tryAxis(mean)) {
-                    // 1/s falls with distance: reversed fit, so depth grows away from pLight.
-                    M = fitToPoints(pre * Mc, bv, true);
-                } else {
-                    ok = false;
-                }
-            }
-            if (!ok || !finite(M) || !(minW(M, bv) > 0.0)) {
                 diag.fallback = "PSM: no shadow frustum from the post-perspective light contains B; focused SSM used";
                 M = ssm(bv);
                 reverse = false;

@@ -168,6 +168,11 @@ std::string StressReport::text() const {
     for (const auto& m : methods)
         if (!m.firstFailure.empty()) s << "first " << shadowMethodName(m.method) << " failure: " << m.firstFailure << "\n";
     if (!firstSampleFailure.empty()) s << "first sample failure: " << firstSampleFailure << "\n";
+    for (const auto& m : methods)
+        for (const auto& [why, count] : m.fallbackReasons)
+            s << "  " << shadowMethodName(m.method) << " fallback x" << count << ": " << why << "\n";
+    for (const auto& m : methods)
+        if (!m.firstFallback.empty()) s << "  first " << shadowMethodName(m.method) << " fallback: " << m.firstFallback << "\n";
     return s.str();
 }
 
@@ -242,7 +247,11 @@ StressReport runStress(const StressOptions& options) {
                 continue;
             }
             ++ms.valid;
-            if (!setup.diagnostics.fallback.empty()) ++ms.fallbacks;
+            if (!setup.diagnostics.fallback.empty()) {
+                ++ms.fallbacks;
+                ++ms.fallbackReasons[setup.diagnostics.fallback];
+                if (ms.firstFallback.empty()) ms.firstFallback = "case " + std::to_string(i) + ": " + c.describe();
+            }
             double worst = 0.0;
             bool bad = false;
             for (const auto& p : bv) {

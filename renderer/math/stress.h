@@ -8,6 +8,7 @@
 #include "math/shadow_setup.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ struct MethodStress {
     std::uint64_t fallbacks = 0;            // diagnostics.fallback not empty (B empty excluded)
     double worstExcess = 0.0;               // largest max(|ndc|) - 1 seen
     std::string firstFailure;               // description of the first failing case
+    std::map<std::string, std::uint64_t> fallbackReasons;  // diagnostics.fallback -> count
+    std::string firstFallback;              // description of the first case with a fallback
 };
 
 struct StressReport {
