@@ -1,12 +1,22 @@
 // The interactive viewer: `shadowlab [SCENE]` opens a GLFW window running the same Renderer as the
-// headless path, with ImGui panels that only edit the Settings struct.
+// headless path, with ImGui panels that only edit the Settings struct (ui/), overlays drawn by
+// OverlayRenderer (renderer/overlay.h), split compare views and the glTF animations.
+//
+// Controls: left drag looks, right drag orbits, wheel dollies, W/A/S/D/Q/E fly (shift: faster),
+// 1-4 pick SSM / SSM unfocused / PSM / LiSPSM, space plays/pauses, F1 hides the panels,
+// F12 saves a screenshot named after the method(s). Dropping a .json file applies a view state,
+// dropping a .gltf/.glb opens it.
 #include "camera_controller.h"
 #include "commands.h"
 #include "gl/debug_output.h"
+#include "overlay.h"
+#include "panels.h"
 #include "render_target.h"
-#include "scenes/gltf_loader.h"
 #include "renderer.h"
+#include "scenes/animation.h"
+#include "scenes/gltf_loader.h"
 #include "stats_panel.h"
+#include "widgets.h"
 #include "view_setup.h"
 
 #define GLFW_INCLUDE_NONE
@@ -17,8 +27,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -30,15 +43,23 @@ struct ViewerOptions {
     std::string scene;
     int frames = 0;  // 0 = run until closed
     std::string screenshot;  // written after the last frame
+    std::string saveView;    // view state JSON written on exit
+    bool noUi = false;       // start with the panels hidden (F1 toggles)
     int width = 1280, height = 720;
     SettingsOverrides overrides;
 };
 
-// Files dropped on the window, loaded at the start of the next frame.
+// Files dropped on the window, handled at the start of the next frame.
 std::vector<std::string> g_droppedFiles;
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_droppedFiles.emplace_back(paths[i]);
+}
+
+double g_scroll = 0.0;
+void onScroll(GLFWwindow* window, double dx, double dy) {
+    ImGui_ImplGlfw_ScrollCallback(window, dx, dy);
+    g_scroll += dy;
 }
 
 struct WindowDeleter {
@@ -69,11 +90,23 @@ struct ImGuiSession {
     }
 };
 
+// The methods on screen: one, or the split-compare list.
+std::vector<ShadowMethod> shownMethods(const Settings& settings) {
+    if (settings.compare.count <= 1) return {settings.method};
+    std::vector<ShadowMethod> methods;
+    for (int i = 0; i < settings.compare.count && i < int(settings.compare.methods.size()); ++i)
+        methods.push_back(settings.compare.methods[std::size_t(i)]);
+    return methods;
+}
+
+// shadowlab-lispsm-20260101-120000.png, or shadowlab-ssm-vs-psm-vs-lispsm-... for split views.
 std::string screenshotName(const Settings& settings) {
     std::time_t now = std::time(nullptr);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-    return std::string("shadowlab-") + methodName(settings.method) + "-" + stamp + ".png";
+    std::string methods;
+    for (ShadowMethod m : shownMethods(settings)) methods += (methods.empty() ? "" : "-vs-") + std::string(methodName(m));
+    return "shadowlab-" + methods + "-" + stamp + ".png";
 }
 
 CameraInput readCameraInput(GLFWwindow* window, double dt, glm::dvec2& lastCursor, double& scrollAccumulator) {
@@ -98,11 +131,82 @@ CameraInput readCameraInput(GLFWwindow* window, double dt, glm::dvec2& lastCurso
     return in;
 }
 
-double g_scroll = 0.0;
-void onScroll(GLFWwindow* window, double dx, double dy) {
-    ImGui_ImplGlfw_ScrollCallback(window, dx, dy);
-    g_scroll += dy;
+bool writeTextFile(const std::string& file, const std::string& text, std::string& error) {
+    std::ofstream out(file, std::ios::binary);
+    if (!out || !(out << text) || !out.flush()) {
+        error = "cannot write '" + file + "'";
+        return false;
+    }
+    return true;
 }
+
+// Applies a view-state JSON file to the settings (only when it is valid as a whole).
+bool loadViewFile(const std::string& file, Settings& settings, std::string& error) {
+    std::string text;
+    if (!readTextFile(file, text, error)) return false;
+    Settings loaded = settings;
+    if (!fromJsonText(text, loaded, error)) {
+        error = file + ": " + error;
+        return false;
+    }
+    for (const std::string& change : sanitize(loaded)) std::cerr << "shadowlab: adjusted " << change << "\n";
+    settings = loaded;
+    return true;
+}
+
+ui::AnimationInfo animationInfo(const Scene& scene) {
+    ui::AnimationInfo info;
+    info.duration = sceneAnimationDuration(scene);
+    info.animations = int(scene.animations.size());
+    for (const Animation& a : scene.animations) info.channels += int(a.channels.size());
+    return info;
+}
+
+// Screen layout of one frame, in framebuffer pixels with the origin at the TOP-left (ImGui's);
+// toGl() flips a rectangle to GL's bottom-left origin.
+struct Layout {
+    int fbWidth = 0, fbHeight = 0;
+    int viewWidth = 0;  // the 3D area: left of the control window
+    std::vector<InsetRect> views;  // top-left origin
+    InsetRect shadowMapInset, lightViewInset, observerInset;
+};
+
+InsetRect toGl(const InsetRect& r, int fbHeight) { return {r.x, fbHeight - r.y - r.height, r.width, r.height}; }
+
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings) {
+    Layout l;
+    l.fbWidth = fbWidth;
+    l.fbHeight = fbHeight;
+    l.viewWidth = showUi ? std::max(16, fbWidth - int(ui::controlWindowWidth())) : fbWidth;
+    const int count = int(shownMethods(settings).size());
+    for (int i = 0; i < count; ++i) {
+        const int x0 = l.viewWidth * i / count, x1 = l.viewWidth * (i + 1) / count;
+        l.views.push_back({x0, 0, std::max(1, x1 - x0 - (i + 1 < count ? 2 : 0)), fbHeight});
+    }
+    // Insets along the bottom edge of the 3D area, left to right, as many as are switched on.
+    const int margin = 12;
+    const int side = std::max(64, std::min({fbHeight / 3, l.viewWidth / 4, 360}));
+    int x = margin;
+    const int y = fbHeight - side - margin;
+    auto place = [&](InsetRect& r, bool on, int width) {
+        if (!on) return;
+        r = {x, y, width, side};
+        x += width + margin + 4;
+    };
+    place(l.shadowMapInset, settings.overlays.shadowMapInset, side);
+    place(l.lightViewInset, settings.overlays.lightViewInset, side);
+    place(l.observerInset, settings.overlays.observerInset, side * 4 / 3);
+    return l;
+}
+
+struct ViewerState {
+    ui::ViewerStatus status;
+    ui::ObserverView observer;
+    ui::ViewStateUi viewState;
+    ui::AnimationInfo animation;
+    bool showUi = true;
+    bool screenshotRequested = false;
+};
 
 void runViewer(const ViewerOptions& options) {
     const std::string sceneFile = options.scene.empty() ? defaultScenePath() : options.scene;
@@ -142,14 +246,23 @@ void runViewer(const ViewerOptions& options) {
         std::cerr << "shadowlab: " << error << "\n";
         throw CLI::RuntimeError(1);
     }
+    auto overlays = OverlayRenderer::create(error);
+    if (!overlays) {
+        std::cerr << "shadowlab: " << error << "\n";
+        throw CLI::RuntimeError(1);
+    }
+    // The pose at the saved time, so a loaded view shows the frame it was saved at.
+    animateScene(*scene, settings.animation.time);
     renderer->setScene(*scene);
     ImGuiSession imgui(window.get());
     glfwSetScrollCallback(window.get(), onScroll);
 
-    ui::ViewerStatus status;
-    status.sceneName = sceneFile;
-    status.sceneTriangles = scene->triangleCount();
-    status.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    ViewerState state;
+    state.showUi = !options.noUi;
+    state.status.sceneName = sceneFile;
+    state.status.sceneTriangles = scene->triangleCount();
+    state.status.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    state.animation = animationInfo(*scene);
     CameraController controller;
     controller.orbitDistance = std::max(1.0, glm::length(scene->bounds.extent()) * 0.25);
     glm::dvec2 lastCursor{0.0};
@@ -157,59 +270,189 @@ void runViewer(const ViewerOptions& options) {
 
     using Clock = std::chrono::steady_clock;
     auto last = Clock::now();
-    double fps = 0.0, seconds = 0.0;
+    double fps = 0.0;
+    double posedTime = settings.animation.time;
     FrameStats stats;
-    bool screenshotRequested = false;
     for (int frame = 0; !glfwWindowShouldClose(window.get()); ++frame) {
         if (options.frames > 0 && frame >= options.frames) break;
         glfwPollEvents();
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
-        seconds += dt;
         if (dt > 0.0) fps = fps == 0.0 ? 1.0 / dt : fps * 0.95 + 0.05 / dt;
 
         for (const std::string& file : std::exchange(g_droppedFiles, {})) {
+            if (std::filesystem::path(file).extension() == ".json") {
+                if (loadViewFile(file, settings, error)) state.status.lastMessage = "applied view " + file;
+                else state.status.lastError = error;
+                continue;
+            }
             LoadResult loaded = loadScene(file);
             if (!loaded.ok()) {
-                status.lastError = loaded.error;  // keep the current scene
+                state.status.lastError = loaded.error;  // keep the current scene
                 std::cerr << "shadowlab: " << loaded.error << "\n";
                 continue;
             }
             scene = std::move(loaded.scene);
             settings.camera = initialSettings(*scene).camera;
+            settings.animation.time = 0.0;
+            animateScene(*scene, 0.0);
+            posedTime = 0.0;
             renderer->setScene(*scene);
-            status = {file, scene->triangleCount(), status.renderer, "", "opened " + file};
+            state.status.sceneName = file;
+            state.status.sceneTriangles = scene->triangleCount();
+            state.status.lastError.clear();
+            state.status.lastMessage = "opened " + file;
+            state.animation = animationInfo(*scene);
             controller.orbitDistance = std::max(1.0, glm::length(scene->bounds.extent()) * 0.25);
         }
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) screenshotRequested = true;
-        controller.apply(settings.camera, readCameraInput(window.get(), dt, lastCursor, g_scroll));
+        const ImGuiIO& io = ImGui::GetIO();
+        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.screenshotRequested = true;
+        if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) state.showUi = !state.showUi;
+        if (!io.WantCaptureKeyboard) {
+            const ShadowMethod byKey[] = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Psm,
+                                          ShadowMethod::Lispsm};
+            for (int k = 0; k < 4; ++k)
+                if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false)) settings.method = byKey[k];
+            if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) settings.animation.playing = !settings.animation.playing;
+        }
 
-        const auto cpuStart = Clock::now();
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
-        if (fbWidth > 0 && fbHeight > 0)
-            stats = renderer->render(*scene, settings, seconds, Viewport{0, 0, 0, fbWidth, fbHeight});
+        if (state.showUi) {
+            ui::ControlContext ctx{&stats, &*scene, state.animation, &state.observer, &state.viewState};
+            const ui::ControlResult controls = ui::drawControlWindow(settings, ctx, float(fbWidth), float(fbHeight));
+            if (controls.changed) sanitize(settings);
+            if (controls.requests.save) {
+                const std::string file = state.viewState.file;
+                if (writeTextFile(file, toJsonText(settings), error)) state.status.lastMessage = "saved view " + file;
+                else state.status.lastError = error;
+            }
+            if (controls.requests.load) {
+                if (loadViewFile(state.viewState.file, settings, error))
+                    state.status.lastMessage = std::string("loaded view ") + state.viewState.file;
+                else state.status.lastError = error;
+            }
+            if (controls.requests.screenshot) state.screenshotRequested = true;
+        }
+        controller.apply(settings.camera, readCameraInput(window.get(), dt, lastCursor, g_scroll));
+
+        // The scene clock: glTF animations and the animated sun; saved with the view so headless
+        // renders reproduce the frame.
+        if (settings.animation.playing) settings.animation.time = std::max(0.0, settings.animation.time + dt * settings.animation.speed);
+        if (settings.animation.time != posedTime && animateScene(*scene, settings.animation.time)) {
+            // Moving casters: new instance matrices; the renderer recomputes S, B and the map.
+            renderer->updateInstances(*scene);
+        }
+        posedTime = settings.animation.time;
+        const double seconds = settings.animation.time;
+
+        const auto cpuStart = Clock::now();
+        std::vector<ui::Caption> captions;
+        std::vector<std::string> compareLines;
+        if (fbWidth > 0 && fbHeight > 0) {
+            const Layout layout = layoutFrame(fbWidth, fbHeight, state.showUi, settings);
+            // The area right of the views (under the control window) is cleared once.
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fbWidth, fbHeight);
+            const GLfloat clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+            glClearBufferfv(GL_COLOR, 0, clear);
+            // Right to left, so the left view (whose shadow map and setup the insets and read-outs
+            // show) is rendered last.
+            const std::vector<ShadowMethod> methods = shownMethods(settings);
+            for (int i = int(methods.size()) - 1; i >= 0; --i) {
+                Settings view = settings;
+                view.method = methods[std::size_t(i)];
+                const InsetRect r = toGl(layout.views[std::size_t(i)], fbHeight);
+                FrameStats viewStats = renderer->render(*scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
+                if (methods.size() > 1) {
+                    captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, methodName(view.method)});
+                    double gpu = 0.0;
+                    for (const PassStats& p : viewStats.passes) gpu += p.gpuMs;
+                    compareLines.insert(compareLines.begin(), std::string(methodName(view.method)) + ": GPU " +
+                                                                  ui::formatNumber(gpu, 3) + " ms, casters " +
+                                                                  std::to_string(viewStats.castersDrawn));
+                }
+                if (i == 0) stats = std::move(viewStats);
+            }
+
+            const ViewFrustum viewFrustum0 = viewFrustum(
+                settings.camera, double(layout.views[0].width) / std::max(1, layout.views[0].height));
+            const LightFrame light = resolveLight(*scene, settings.light, seconds);
+            const bool haveMap = stats.shadowMapSize > 0 && renderer->lastShadowSetup().valid;
+            const ShadowSetup& setup = renderer->lastShadowSetup();
+            auto noteFor = [&](const InsetRect& r, const std::string& title) {
+                captions.push_back({float(r.x + 4), float(r.y + 4), title});
+            };
+            if (!layout.shadowMapInset.empty()) {
+                const InsetRect r = toGl(layout.shadowMapInset, fbHeight);
+                overlays->drawFrame(0, r);
+                if (haveMap) overlays->drawDepthInset(0, r, renderer->shadowMapTexture(), setup.reverseDepthTest);
+                noteFor(layout.shadowMapInset, haveMap ? "shadow map depth" : "shadow map: none this frame");
+            }
+            if (!layout.lightViewInset.empty()) {
+                const InsetRect r = toGl(layout.lightViewInset, fbHeight);
+                overlays->drawFrame(0, r);
+                if (haveMap && renderer->gpuScene()) {
+                    const glm::dmat4 m = positiveWOverBody(setup.worldToShadowClip, setup.diagnostics.bodyB);
+                    overlays->drawScene(0, r, *scene, *renderer->gpuScene(), m, light.direction, setup.reverseDepthTest);
+                    const double marker = 0.02 * std::max(1e-3, glm::length(setup.bodyBounds.extent()));
+                    overlays->drawWires(0, r,
+                                        overlayWires(setup.diagnostics, settings.overlays, viewFrustum0, scene->bounds,
+                                                     light.direction, marker),
+                                        m);
+                }
+                noteFor(layout.lightViewInset, haveMap ? "light view (warped)" : "light view: no shadow map");
+            }
+            if (!layout.observerInset.empty() && renderer->gpuScene()) {
+                const InsetRect r = toGl(layout.observerInset, fbHeight);
+                overlays->drawFrame(0, r);
+                const ShadowDiagnostics& d = stats.shadow;
+                const ObserverCamera observer =
+                    observerCamera(d, viewFrustum0, scene->bounds, state.observer.yawDeg, state.observer.pitchDeg,
+                                   state.observer.distance, double(r.width) / double(r.height));
+                overlays->drawScene(0, r, *scene, *renderer->gpuScene(), observer.viewProjection(), light.direction,
+                                    false);
+                overlays->drawWires(0, r,
+                                    overlayWires(d, settings.overlays, viewFrustum0, scene->bounds, light.direction,
+                                                 observer.radius * 0.04),
+                                    observer.viewProjection());
+                noteFor(layout.observerInset, "observer: B violet, V blue, S green, P red");
+            }
+        }
         const double frameCpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count();
 
-        ui::drawStatsPanel(stats, fps, frameCpuMs, status);
+        if (state.showUi) {
+            ui::drawCaptions(captions);
+            state.status.compareLines = compareLines;
+            ui::drawStatsPanel(stats, fps, frameCpuMs, state.status);
+        }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         const bool lastFrame = options.frames > 0 && frame + 1 >= options.frames;
-        if (screenshotRequested || (lastFrame && !options.screenshot.empty())) {
-            const std::string file = lastFrame && !options.screenshot.empty() ? options.screenshot : screenshotName(settings);
+        if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
+            const std::string file =
+                lastFrame && !options.screenshot.empty() ? options.screenshot : screenshotName(settings);
             RgbaImage shot = readFramebuffer(0, 0, 0, fbWidth, fbHeight);
-            if (writePng(shot, file, error)) status.lastMessage = "saved " + file;
-            else status.lastError = error;
-            std::cerr << "shadowlab: " << (status.lastError.empty() ? status.lastMessage : status.lastError) << "\n";
-            screenshotRequested = false;
+            state.status.lastError.clear();
+            if (writePng(shot, file, error)) state.status.lastMessage = "saved " + file;
+            else state.status.lastError = error;
+            std::cerr << "shadowlab: "
+                      << (state.status.lastError.empty() ? state.status.lastMessage : state.status.lastError) << "\n";
+            state.screenshotRequested = false;
         }
         glfwSwapBuffers(window.get());
+    }
+    if (!options.saveView.empty()) {
+        if (!writeTextFile(options.saveView, toJsonText(settings), error)) {
+            std::cerr << "shadowlab: " << error << "\n";
+            throw CLI::RuntimeError(1);
+        }
     }
     if (debugLog.errorCount > 0) {
         std::cerr << "shadowlab: " << debugLog.errorCount << " OpenGL error(s)\n";
@@ -224,6 +467,8 @@ void addViewerOptions(CLI::App& app) {
     app.add_option("scene", options->scene, "glTF scene to open (.gltf/.glb); default: the generated forest");
     app.add_option("--frames", options->frames, "run this many frames, then exit (0 = until closed)");
     app.add_option("--screenshot", options->screenshot, "save the last frame (with panels) to this PNG");
+    app.add_option("--save-view", options->saveView, "write the view state JSON (what --view reads) on exit");
+    app.add_flag("--no-ui", options->noUi, "start with the panels hidden (F1 toggles them)");
     app.add_option("--width", options->width, "window width")->capture_default_str();
     app.add_option("--height", options->height, "window height")->capture_default_str();
     app.add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");

@@ -1,25 +1,29 @@
 #include "stats_panel.h"
 
+#include "widgets.h"
+
 #include <imgui.h>
 
 namespace shadowlab::ui {
 
 void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, const ViewerStatus& status) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(10, 36), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.8f);
     if (!ImGui::Begin("Stats")) {
         ImGui::End();
         return;
     }
-    ImGui::Text("%s", status.sceneName.c_str());
+    ImGui::TextUnformatted(status.sceneName.c_str());
     ImGui::TextDisabled("%s", status.renderer.c_str());
     ImGui::Separator();
     ImGui::Text("%.1f fps   frame CPU %.2f ms", fps, frameCpuMs);
-    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingStretchProp)) {
+    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("CPU ms");
         ImGui::TableSetupColumn("GPU ms");
         ImGui::TableHeadersRow();
+        double cpu = 0.0, gpu = 0.0;
         for (const PassStats& p : stats.passes) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
@@ -28,16 +32,35 @@ void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, cons
             ImGui::Text("%.3f", p.cpuMs);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", p.gpuMs);
+            cpu += p.cpuMs;
+            gpu += p.gpuMs;
         }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("total");
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", cpu);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", gpu);
         ImGui::EndTable();
     }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("CPU: time spent issuing each pass; GPU: GL_TIME_ELAPSED timer queries, read a few frames "
+                          "later so the CPU never waits.");
     ImGui::Text("triangles drawn %zu (scene %zu)", stats.trianglesDrawn, status.sceneTriangles);
-    ImGui::Text("draw calls %zu", stats.drawCalls);
+    ImGui::Text("draw calls %zu, instances visible %zu", stats.drawCalls, stats.instancesVisible);
     if (stats.shadowMapSize > 0) {
         ImGui::Text("shadow map %d x %d", stats.shadowMapSize, stats.shadowMapSize);
         ImGui::Text("casters drawn %zu, culled %zu", stats.castersDrawn, stats.castersCulled);
+        helpMarker("Casters whose bounds cannot reach the intersection body B are not drawn into the shadow map "
+                   "(thesis 4.2, 9.2.2).");
+    } else {
+        ImGui::TextDisabled("no shadow map this frame");
     }
+    for (const std::string& line : status.compareLines) ImGui::BulletText("%s", line.c_str());
     if (!stats.lightNote.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s", stats.lightNote.c_str());
+    if (!stats.shadow.fallback.empty())
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s", stats.shadow.fallback.c_str());
     if (!status.lastError.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s", status.lastError.c_str());
     if (!status.lastMessage.empty()) ImGui::TextWrapped("%s", status.lastMessage.c_str());
     ImGui::End();

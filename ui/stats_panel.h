@@ -1,9 +1,10 @@
 #pragma once
-// The stats panel: frame rate, CPU/GPU time per pass, triangles, draw calls. ImGui only: it reads
-// plain stats, never GL.
+// The stats panel: frame rate, CPU/GPU time per pass (GL timer queries, read a few frames late),
+// casters drawn/culled, triangles, shadow map size. ImGui only: it reads plain stats, never GL.
 #include "frame_stats.h"
 
 #include <string>
+#include <vector>
 
 namespace shadowlab::ui {
 
@@ -13,6 +14,7 @@ struct ViewerStatus {
     std::string renderer;    // GL_RENDERER
     std::string lastError;   // e.g. a dropped file that failed to load
     std::string lastMessage;  // e.g. "saved screenshot ..."
+    std::vector<std::string> compareLines;  // one per split-compare view
 };
 
 void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, const ViewerStatus& status);
