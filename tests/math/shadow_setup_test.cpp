@@ -1,1 +1,549 @@
+// B, SSM, PSM and LiSPSM: named geometric cases and the invariants of the issue.
+#include "math/shadow_setup.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace shadowlab {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const ShadowMethod kAllMethods[] = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Psm,
+                                    ShadowMethod::Lispsm};
+
+Aabb box(glm::dvec3 lo, glm::dvec3 hi) {
+    Aabb b;
+    b.min = lo;
+    b.max = hi;
+    return b;
+}
+
+// A terrain-like scene: 200 x 30 x 200, camera 2 above the ground looking along -z.
+Aabb terrain() { return box({-100, 0, -100}, {100, 30, 100}); }
+ViewFrustum groundView(glm::dvec3 forward = {0, 0, -1}) {
+    ViewFrustum v;
+    v.eye = {0, 2, 50};
+    v.forward = glm::normalize(forward);
+    v.up = {0, 1, 0};
+    v.fovY = glm::radians(60.0);
+    v.aspect = 1.5;
+    v.zNear = 0.5;
+    v.zFar = 80.0;
+    return v;
+}
+ShadowLight sunFrom(glm::dvec3 travel) {
+    ShadowLight l;
+    l.kind = ShadowLightKind::Directional;
+    l.direction = glm::normalize(travel);
+    return l;
+}
+
+ShadowSetup setupFor(const ViewFrustum& v, const ShadowLight& l, const Aabb& s, ShadowMethod m,
+                     LispsmParams lp = {}) {
+    ShadowParams p;
+    p.method = m;
+    p.lispsm = lp;
+    return computeShadowSetup(v, l, s, p);
+}
+
+glm::dvec3 ndc(const glm::dmat4& m, const glm::dvec3& p) {
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    return glm::dvec3(h) / h.w;
+}
+
+// Every vertex of B maps into [-1, 1]^3 (tolerance 1e-4) with w > 0.
+void expectBInClipCube(const ShadowSetup& s, const ConvexBody& B) {
+    ASSERT_TRUE(s.valid);
+    for (const auto& p : B.vertices()) {
+        const glm::dvec4 h = s.worldToShadowClip * glm::dvec4(p, 1.0);
+        ASSERT_GT(h.w, 0.0);
+        EXPECT_LE(std::abs(h.x / h.w), 1.0 + 1e-4);
+        EXPECT_LE(std::abs(h.y / h.w), 1.0 + 1e-4);
+        EXPECT_LE(std::abs(h.z / h.w), 1.0 + 1e-4);
+    }
+}
+
+// Random points of V n S (convex combinations of its corners) all lie in B.
+void expectVisiblePartInB(const ViewFrustum& v, const ShadowLight& l, const Aabb& s, int samples = 200) {
+    ConvexBody vs;
+    const ConvexBody B = intersectionBody(v, l, s, &vs);
+    ASSERT_FALSE(vs.empty());
+    std::mt19937_64 g(42);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const auto verts = vs.vertices();
+    for (int i = 0; i < samples; ++i) {
+        glm::dvec3 p{0.0};
+        double w = 0.0;
+        for (const auto& q : verts) {
+            const double a = std::pow(u(g), 4.0);
+            p += a * q;
+            w += a;
+        }
+        p /= w;
+        EXPECT_TRUE(B.contains(p, 1e-9)) << p.x << " " << p.y << " " << p.z;
+    }
+}
+
+// --- ViewFrustum ------------------------------------------------------------------------------
+
+TEST(ViewFrustum, MatricesFollowGlConventions) {
+    const ViewFrustum v = groundView(glm::dvec3(0.3, -0.2, -1.0));
+    const glm::dmat4 refView = glm::lookAt(v.eye, v.eye + v.forward, v.up);
+    const glm::dmat4 refProj = glm::perspectiveRH_NO(v.fovY, v.aspect, v.zNear, v.zFar);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            EXPECT_NEAR(v.viewMatrix()[c][r], refView[c][r], 1e-12);
+            EXPECT_NEAR(v.projectionMatrix()[c][r], refProj[c][r], 1e-12);
+        }
+    // The near plane centre maps to NDC z = -1, the far one to +1.
+    const glm::dmat4 vp = v.projectionMatrix() * v.viewMatrix();
+    EXPECT_NEAR(ndc(vp, v.eye + glm::normalize(v.forward) * v.zNear).z, -1.0, 1e-12);
+    EXPECT_NEAR(ndc(vp, v.eye + glm::normalize(v.forward) * v.zFar).z, 1.0, 1e-9);
+    EXPECT_GT(frustumBody(v).volume(), 0.0);
+}
+
+// --- The intersection body B (thesis eq. 4.2) --------------------------------------------------
+
+TEST(IntersectionBody, LightStraightDownReachesTheSceneTop) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({0, -1, 0});
+    ConvexBody vs;
+    const ConvexBody B = intersectionBody(v, l, terrain(), &vs);
+    ASSERT_FALSE(B.empty());
+    // B is V n S extruded straight up to the top of S: same x/z footprint, y up to 30.
+    const Aabb bb = B.bounds(), vb = vs.bounds();
+    EXPECT_NEAR(bb.max.y, 30.0, 1e-9);
+    EXPECT_NEAR(bb.min.y, vb.min.y, 1e-9);
+    EXPECT_NEAR(bb.min.x, vb.min.x, 1e-9);
+    EXPECT_NEAR(bb.max.x, vb.max.x, 1e-9);
+    EXPECT_NEAR(bb.min.z, vb.min.z, 1e-9);
+    EXPECT_NEAR(bb.max.z, vb.max.z, 1e-9);
+    expectVisiblePartInB(v, l, terrain());
+    // A point above the visible ground (a potential caster) is in B; one beside the view is not.
+    EXPECT_TRUE(B.contains({0, 25, 20}, 1e-9));
+    EXPECT_FALSE(B.contains({90, 25, 20}, 1e-9));
+}
+
+TEST(IntersectionBody, GrazingLightStretchesAcrossTheScene) {
+    const ViewFrustum v = groundView();
+    const double el = glm::radians(0.5);
+    const ShadowLight l = sunFrom({-std::cos(el), -std::sin(el), 0});  // from +x, nearly horizontal
+    const ConvexBody B = intersectionBody(v, l, terrain());
+    ASSERT_FALSE(B.empty());
+    EXPECT_NEAR(B.bounds().max.x, 100.0, 1e-9) << "extruded toward the light up to the scene bounds";
+    expectVisiblePartInB(v, l, terrain());
+}
+
+TEST(IntersectionBody, LightFromBehindIncludesCastersBehindTheCamera) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({0, -0.5, -1});  // travels along the view: from behind
+    const ConvexBody B = intersectionBody(v, l, terrain());
+    ASSERT_FALSE(B.empty());
+    EXPECT_TRUE(B.contains({0, 10, 60}, 1e-9)) << "above and behind the eye, between the sun and the view";
+    EXPECT_NEAR(B.bounds().max.z, 100.0, 1e-9);
+    expectVisiblePartInB(v, l, terrain());
+}
+
+TEST(IntersectionBody, SpotLightIsClippedByItsCone) {
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {0, 20, 20};
+    l.direction = {0, -1, 0};
+    l.outerConeAngle = glm::radians(30.0);
+    ConvexBody lvs;
+    const ConvexBody B = intersectionBody(v, l, terrain(), &lvs);
+    ASSERT_FALSE(B.empty());
+    // Everything in B lies inside the square pyramid around the 30 degree cone.
+    for (const auto& p : B.vertices()) {
+        const glm::dvec3 d = p - l.position;
+        EXPECT_GE(-d.y, 0.0);
+        EXPECT_LE(std::abs(d.x), std::tan(glm::radians(30.0)) * -d.y + 1e-9);
+        EXPECT_LE(std::abs(d.z), std::tan(glm::radians(30.0)) * -d.y + 1e-9);
+    }
+    EXPECT_TRUE(B.contains({0, 10, 20}, 1e-9)) << "between the light and the lit ground";
+}
+
+TEST(IntersectionBody, SpotPointingAwayGivesAnInvalidSetup) {
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {0, 20, 60};
+    l.direction = {0, 0, 1};  // away from everything the camera sees
+    l.outerConeAngle = glm::radians(20.0);
+    for (ShadowMethod m : kAllMethods) {
+        const ShadowSetup s = setupFor(v, l, terrain(), m);
+        EXPECT_FALSE(s.valid);
+        EXPECT_FALSE(s.diagnostics.fallback.empty());
+        EXPECT_FALSE(casterCanReach(s, terrain()));
+    }
+}
+
+// --- Invariants for all methods ------------------------------------------------------------------
+
+struct Config {
+    const char* name;
+    ViewFrustum view;
+    ShadowLight light;
+};
+
+std::vector<Config> configs() {
+    std::vector<Config> c;
+    c.push_back({"sun side", groundView(), sunFrom({1, -1, 0.2})});
+    c.push_back({"sun front", groundView(), sunFrom({0, -0.4, 1})});
+    c.push_back({"sun behind", groundView(), sunFrom({0, -0.4, -1})});
+    c.push_back({"sun straight down", groundView(), sunFrom({0, -1, 0})});
+    c.push_back({"sun parallel to view", groundView(), sunFrom({0, 0, -1})});
+    c.push_back({"sun antiparallel to view", groundView(), sunFrom({0, 0, 1})});
+    c.push_back({"looking down, sun down", groundView({0, -1, 0.001}), sunFrom({0, -1, 0})});
+    ShadowLight spot;
+    spot.kind = ShadowLightKind::Spot;
+    spot.position = {10, 15, 20};
+    spot.direction = glm::normalize(glm::dvec3(-0.3, -1, -0.5));
+    spot.outerConeAngle = glm::radians(35.0);
+    c.push_back({"spot ahead", groundView(), spot});
+    spot.position = {0, 5, 70};  // behind the camera
+    spot.direction = glm::normalize(glm::dvec3(0, -0.3, -1));
+    c.push_back({"spot behind", groundView(), spot});
+    spot.position = {0, 3, 40};  // inside the view frustum
+    spot.direction = glm::normalize(glm::dvec3(0.2, -1, -0.3));
+    spot.range = 20.0;
+    c.push_back({"spot inside view", groundView(), spot});
+    return c;
+}
+
+TEST(ShadowSetupInvariants, EveryVertexOfBLandsInTheClipCube) {
+    for (const Config& c : configs()) {
+        const ConvexBody B = intersectionBody(c.view, c.light, terrain());
+        for (ShadowMethod m : kAllMethods) {
+            SCOPED_TRACE(std::string(c.name) + " / method " + std::to_string(int(m)));
+            const ShadowSetup s = setupFor(c.view, c.light, terrain(), m);
+            expectBInClipCube(s, B);
+            EXPECT_TRUE(s.diagnostics.fallback.empty()) << s.diagnostics.fallback;
+            // The diagnostics carry the bodies for the UI.
+            EXPECT_EQ(s.diagnostics.bodyB.size(), B.faces().size());
+            EXPECT_EQ(s.diagnostics.viewV.size(), 6u);
+            EXPECT_FALSE(s.diagnostics.sceneS.empty());
+        }
+        expectVisiblePartInB(c.view, c.light, terrain(), 50);
+    }
+}
+
+TEST(ShadowSetupInvariants, PointsBetweenLightAndVisibleReceiversAreInsideTheMap) {
+    // A caster halfway between a visible point and the light must land inside the shadow map
+    // (the depth range includes the casters, not just the receivers).
+    for (const Config& c : configs()) {
+        if (c.light.kind != ShadowLightKind::Directional) continue;
+        ConvexBody vs;
+        intersectionBody(c.view, c.light, terrain(), &vs);
+        for (ShadowMethod m : kAllMethods) {
+            const ShadowSetup s = setupFor(c.view, c.light, terrain(), m);
+            for (const auto& p : vs.vertices()) {
+                // Walk toward the light, staying inside the scene box.
+                glm::dvec3 q = p;
+                for (int i = 0; i < 20; ++i) {
+                    const glm::dvec3 next = q - glm::normalize(c.light.direction) * 1.0;
+                    if (next.x < -100 || next.x > 100 || next.y < 0 || next.y > 30 || next.z < -100 || next.z > 100)
+                        break;
+                    q = next;
+                }
+                const glm::dvec4 h = s.worldToShadowClip * glm::dvec4(q, 1.0);
+                ASSERT_GT(h.w, 0.0) << c.name;
+                EXPECT_LE(std::abs(h.z / h.w), 1.0 + 1e-4) << c.name << " method " << int(m);
+                EXPECT_TRUE(casterCanReach(s, box(q - glm::dvec3(0.01), q + glm::dvec3(0.01)))) << c.name;
+            }
+        }
+    }
+}
+
+// --- LiSPSM (thesis 9.2) -------------------------------------------------------------------------
+
+TEST(Lispsm, NOptFormulasAgree) {
+    // Eq. 8.12: gamma = 90 deg gives z_n + sqrt(z_n z_f).
+    EXPECT_NEAR(lispsmNOptDirectional(0.5, 79.5, 1.0), 0.5 + std::sqrt(0.5 * 80.0), 1e-12);
+    // Eq. 8.13 with z0 = -z_n, z1 = -(z_n + d sin gamma) equals eq. 8.11.
+    for (double g : {0.1, 0.7, 1.2, kPi / 2}) {
+        const double zn = 0.3, d = 120.0;
+        EXPECT_NEAR(lispsmNOptGeneral(d, -zn, -(zn + d * std::sin(g))), lispsmNOptDirectional(zn, d, std::sin(g)),
+                    1e-9 * lispsmNOptDirectional(zn, d, std::sin(g)));
+    }
+    EXPECT_TRUE(std::isinf(lispsmNOptDirectional(1.0, 10.0, 0.0)));
+    EXPECT_TRUE(std::isinf(lispsmNOptGeneral(10.0, -1.0, -1.0)));
+    EXPECT_TRUE(std::isinf(lispsmNOptGeneral(10.0, -1.0, -0.5)));
+}
+
+TEST(Lispsm, PerpendicularLightGivesTheOptimalN) {
+    // gamma = 90 deg, V inside S: n = z_n + sqrt(z_n z_f) (thesis eq. 9.1).
+    const ViewFrustum v = groundView();
+    const Aabb big = box({-1000, -1000, -1000}, {1000, 1000, 1000});
+    const ShadowLight l = sunFrom({1, 0, 0});
+    const ShadowSetup s = setupFor(v, l, big, ShadowMethod::Lispsm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_NEAR(s.diagnostics.gamma, kPi / 2, 1e-12);
+    const double expected = v.zNear + std::sqrt(v.zNear * v.zFar);
+    EXPECT_NEAR(s.diagnostics.nOptReal, expected, 1e-9 * expected);
+    EXPECT_NEAR(s.diagnostics.nUsed, expected, 1e-9 * expected);
+    EXPECT_NEAR(s.diagnostics.d, v.zFar - v.zNear, 1e-9);
+    EXPECT_NEAR(s.diagnostics.z0, -v.zNear, 1e-9);
+    EXPECT_NEAR(s.diagnostics.z1, -v.zFar, 1e-6);
+    EXPECT_TRUE(s.diagnostics.hasProjectionCenter);
+    EXPECT_FALSE(s.diagnostics.lispsmP.empty());
+    // The projection centre sits n behind the near plane, on the camera's side (thesis 9.2.4).
+    EXPECT_NEAR(glm::dot(s.diagnostics.projectionCenter - v.eye, v.forward), -(expected - v.zNear), 1e-6);
+}
+
+TEST(Lispsm, VirtualFarPlaneChangesOnlyN) {
+    const ViewFrustum v = groundView();
+    const Aabb big = box({-1000, -1000, -1000}, {1000, 1000, 1000});
+    const ShadowLight l = sunFrom({1, 0, 0});
+    LispsmParams lp;
+    lp.virtualFar = 20.0;
+    const ShadowSetup s = setupFor(v, l, big, ShadowMethod::Lispsm, lp);
+    ASSERT_TRUE(s.valid);
+    EXPECT_NEAR(s.diagnostics.nOptVirtual, v.zNear + std::sqrt(v.zNear * 20.0), 1e-9);
+    EXPECT_NEAR(s.diagnostics.nOptReal, v.zNear + std::sqrt(v.zNear * v.zFar), 1e-9);
+    EXPECT_NEAR(s.diagnostics.nUsed, s.diagnostics.nOptVirtual, 1e-12);
+    // Focusing still uses the real B: its far end is in the map.
+    expectBInClipCube(s, intersectionBody(v, l, big));
+}
+
+TEST(Lispsm, ManualNOverride) {
+    LispsmParams lp;
+    lp.overrideN = true;
+    lp.n = 7.5;
+    const ShadowSetup s = setupFor(groundView(), sunFrom({1, -1, 0}), terrain(), ShadowMethod::Lispsm, lp);
+    ASSERT_TRUE(s.valid);
+    EXPECT_DOUBLE_EQ(s.diagnostics.nUsed, 7.5);
+    expectBInClipCube(s, intersectionBody(groundView(), sunFrom({1, -1, 0}), terrain()));
+}
+
+TEST(Lispsm, ConvergesToSsmAsGammaGoesToZero) {
+    // Light nearly along the view direction: n -> infinity continuously, the map -> SSM.
+    const ViewFrustum v = groundView({0, -1, 0.0});
+    const Aabb s = terrain();
+    double previousDiff = 1e300, previousWarp = 1e300;
+    for (double gamma : {1e-1, 1e-2, 1e-3, 1e-5, 1e-7, 0.0}) {
+        const ShadowLight l = sunFrom({std::sin(gamma), -std::cos(gamma), 0});
+        const ShadowSetup lis = setupFor(v, l, s, ShadowMethod::Lispsm);
+        const ShadowSetup ssm = setupFor(v, l, s, ShadowMethod::SsmFocused);
+        ASSERT_TRUE(lis.valid && ssm.valid);
+        EXPECT_NEAR(lis.diagnostics.gamma, gamma, 1e-9);
+        EXPECT_LE(lis.diagnostics.warp, previousWarp);
+        previousWarp = lis.diagnostics.warp;
+        double diff = 0.0;
+        for (const auto& p : intersectionBody(v, l, s).vertices())
+            diff = std::max(diff, glm::length(ndc(lis.worldToShadowClip, p) - ndc(ssm.worldToShadowClip, p)));
+        EXPECT_LE(diff, previousDiff + 1e-12) << "gamma " << gamma;
+        previousDiff = diff;
+        if (gamma <= 1e-5) {
+            EXPECT_LT(diff, 1e-3) << "gamma " << gamma;
+        }
+        if (gamma == 0.0) {
+            EXPECT_TRUE(std::isinf(lis.diagnostics.nUsed));
+            EXPECT_EQ(lis.diagnostics.warp, 0.0);
+            EXPECT_LT(diff, 1e-12);
+        }
+    }
+}
+
+TEST(Lispsm, SpotLightUsesTheGeneralFormula) {
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {30, 20, 20};
+    l.direction = glm::normalize(glm::dvec3(-1, -1, -0.5));
+    l.outerConeAngle = glm::radians(40.0);
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Lispsm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_LT(s.diagnostics.z0, 0.0);
+    EXPECT_LT(s.diagnostics.z1, s.diagnostics.z0);
+    EXPECT_NEAR(s.diagnostics.nOptReal, lispsmNOptGeneral(s.diagnostics.d, s.diagnostics.z0, s.diagnostics.z1),
+                1e-9 * s.diagnostics.nOptReal);
+    EXPECT_TRUE(std::isfinite(s.diagnostics.nUsed));
+    EXPECT_FALSE(s.diagnostics.lightL.empty());
+    expectBInClipCube(s, intersectionBody(v, l, terrain()));
+}
+
+TEST(Lispsm, BodyVectorOption) {
+    LispsmParams lp;
+    lp.useBodyVector = true;
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({0.3, -1, 0.5});
+    const ShadowSetup a = setupFor(v, l, terrain(), ShadowMethod::Lispsm);
+    const ShadowSetup b = setupFor(v, l, terrain(), ShadowMethod::Lispsm, lp);
+    ASSERT_TRUE(a.valid && b.valid);
+    EXPECT_NE(a.diagnostics.gamma, b.diagnostics.gamma) << "the body vector differs from the view direction";
+    expectBInClipCube(b, intersectionBody(v, l, terrain()));
+}
+
+// --- PSM (Stamminger & Drettakis) ----------------------------------------------------------------
+
+// Points along world light rays through B: their effective depth (reversed when the test is)
+// must grow along the light's travel.
+void expectDepthOrderAlongLightRays(const ViewFrustum& v, const ShadowLight& l, const ShadowSetup& s) {
+    ConvexBody vs;
+    const ConvexBody B = intersectionBody(v, l, terrain(), &vs);
+    int checked = 0;
+    for (const auto& receiver : vs.vertices()) {
+        const glm::dvec3 dir = l.kind == ShadowLightKind::Spot ? glm::normalize(receiver - l.position)
+                                                               : glm::normalize(l.direction);
+        double previous = -1e300;
+        for (double t = -200.0; t <= 0.0; t += 2.0) {
+            const glm::dvec3 p = receiver + dir * t;
+            if (!B.contains(p, 1e-9)) continue;
+            const double z = ndc(s.worldToShadowClip, p).z * (s.reverseDepthTest ? -1.0 : 1.0);
+            EXPECT_GT(z, previous) << "t " << t;
+            previous = z;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 20);
+}
+
+TEST(Psm, LightFromBehindIsAnInvertedPointLight) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({0.2, -0.5, -1});
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Psm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_EQ(s.diagnostics.psmLightKind, PostPerspectiveLight::InvertedPoint);
+    EXPECT_TRUE(s.reverseDepthTest);
+    EXPECT_GT(s.diagnostics.psmMoveBack, 0.0) << "B reaches behind the camera";
+    expectBInClipCube(s, intersectionBody(v, l, terrain()));
+    expectDepthOrderAlongLightRays(v, l, s);
+}
+
+TEST(Psm, LightFromTheFrontIsAPointLight) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({0.2, -0.5, 1});
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Psm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_EQ(s.diagnostics.psmLightKind, PostPerspectiveLight::Point);
+    EXPECT_FALSE(s.reverseDepthTest);
+    EXPECT_GE(s.diagnostics.psmNear, v.zNear);
+    expectBInClipCube(s, intersectionBody(v, l, terrain()));
+    expectDepthOrderAlongLightRays(v, l, s);
+}
+
+TEST(Psm, LightParallelToTheImagePlaneStaysDirectional) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({1, -1, 0});  // perpendicular to the view direction (0, 0, -1)
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Psm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_EQ(s.diagnostics.psmLightKind, PostPerspectiveLight::Directional);
+    EXPECT_FALSE(s.reverseDepthTest);
+    expectBInClipCube(s, intersectionBody(v, l, terrain()));
+    expectDepthOrderAlongLightRays(v, l, s);
+}
+
+TEST(Psm, SpotLightBehindTheCameraInsideTheSceneBecomesAPointLight) {
+    // B reaches the spot's apex, so the move-back (section 4.2) puts the spot in front of the
+    // virtual camera: a normal post-perspective point light.
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {0, 8, 70};
+    l.direction = glm::normalize(glm::dvec3(0, -0.4, -1));
+    l.outerConeAngle = glm::radians(30.0);
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Psm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_EQ(s.diagnostics.psmLightKind, PostPerspectiveLight::Point);
+    EXPECT_GT(s.diagnostics.psmMoveBack, 20.0);
+    expectBInClipCube(s, intersectionBody(v, l, terrain()));
+    expectDepthOrderAlongLightRays(v, l, s);
+}
+
+TEST(Psm, SpotLightBehindTheCameraIsInverted) {
+    // The spot stands outside S, so B (clipped by S) stops short of it and the virtual camera's
+    // move-back leaves it behind the camera plane: an inverted point light (section 3.2).
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {0, 25, 140};
+    l.direction = glm::normalize(glm::dvec3(0, 0, -20) - l.position);
+    l.outerConeAngle = glm::radians(30.0);
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Psm);
+    ASSERT_TRUE(s.valid);
+    EXPECT_EQ(s.diagnostics.psmLightKind, PostPerspectiveLight::InvertedPoint);
+    EXPECT_TRUE(s.reverseDepthTest);
+    expectBInClipCube(s, intersectionBody(v, l, terrain()));
+    expectDepthOrderAlongLightRays(v, l, s);
+}
+
+// --- Linear depth, caster culling, bad input ----------------------------------------------------
+
+TEST(ShadowSetup, LinearDepthCoversBAndGrowsAlongTheLight) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({1, -1, 0.3});
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Lispsm);
+    ASSERT_TRUE(s.valid);
+    const LinearShadowDepth& d = s.linearDepth;
+    EXPECT_FALSE(d.radial);
+    EXPECT_LT(d.nearDepth, d.farDepth);
+    for (const auto& p : intersectionBody(v, l, terrain()).vertices()) {
+        const double t = glm::dot(p - d.origin, d.axis);
+        EXPECT_GE(t, d.nearDepth);
+        EXPECT_LE(t, d.farDepth);
+    }
+    const glm::dvec3 a{0, 5, 0};
+    EXPECT_LT(glm::dot(a - d.origin, d.axis), glm::dot(a + l.direction - d.origin, d.axis));
+}
+
+TEST(ShadowSetup, CasterCulling) {
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({0, -1, 0});
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Lispsm);
+    ASSERT_TRUE(s.valid);
+    // Above the visible ground: casts into the view.
+    EXPECT_TRUE(casterCanReach(s, box({-1, 20, 20}, {1, 22, 22})));
+    // Outside the view and not between it and the sun.
+    EXPECT_FALSE(casterCanReach(s, box({80, 0, 80}, {90, 10, 90})));
+    EXPECT_FALSE(casterCanReach(s, box({-1, 0, 70}, {1, 5, 72}))) << "behind the camera, sun overhead";
+    // A huge box overlapping everything is kept; an empty one is not.
+    EXPECT_TRUE(casterCanReach(s, terrain()));
+    EXPECT_FALSE(casterCanReach(s, Aabb{}));
+}
+
+TEST(ShadowSetup, SpotCasterNearTheApexIsKept) {
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {0, 20, 20};
+    l.direction = {0, -1, 0};
+    l.outerConeAngle = glm::radians(30.0);
+    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::SsmFocused);
+    ASSERT_TRUE(s.valid);
+    EXPECT_TRUE(s.linearDepth.radial);
+    EXPECT_TRUE(casterCanReach(s, box(l.position - glm::dvec3(1e-4), l.position + glm::dvec3(1e-4))));
+    EXPECT_TRUE(casterCanReach(s, box({-0.5, 15, 19.5}, {0.5, 16, 20.5})));
+    EXPECT_FALSE(casterCanReach(s, box({-0.5, 21, 19.5}, {0.5, 22, 20.5}))) << "above (behind) the spot";
+}
+
+TEST(ShadowSetup, BadInputGivesAMessageNotACrash) {
+    ViewFrustum v = groundView();
+    v.eye.x = std::nan("");
+    EXPECT_FALSE(setupFor(v, sunFrom({0, -1, 0}), terrain(), ShadowMethod::Lispsm).valid);
+    v = groundView();
+    v.zNear = 10.0;
+    v.zFar = 1.0;
+    const ShadowSetup s = setupFor(v, sunFrom({0, -1, 0}), terrain(), ShadowMethod::Psm);
+    EXPECT_FALSE(s.valid);
+    EXPECT_NE(s.diagnostics.fallback.find("zNear"), std::string::npos);
+    EXPECT_FALSE(setupFor(groundView(), sunFrom({0, 0, 0}), terrain(), ShadowMethod::SsmFocused).valid);
+    EXPECT_FALSE(setupFor(groundView(), sunFrom({0, -1, 0}), Aabb{}, ShadowMethod::SsmFocused).valid);
+}
+
+TEST(ShadowSetup, ZeroThicknessSceneStillShadows) {
+    const ViewFrustum v = groundView({0, -0.3, -1});
+    const Aabb ground = box({-100, 0, -100}, {100, 0, 100});
+    const ShadowLight l = sunFrom({0.5, -1, 0.2});
+    const ConvexBody B = intersectionBody(v, l, ground);
+    ASSERT_FALSE(B.empty());
+    EXPECT_EQ(B.bounds().extent().y, 0.0);
+    for (ShadowMethod m : kAllMethods) expectBInClipCube(setupFor(v, l, ground, m), B);
+}
+
+}  // namespace
+}  // namespace shadowlab
