@@ -69,9 +69,10 @@ struct Range {
     }
 };
 glm::dvec4 fitRow(const glm::dvec4& r, const glm::dvec4& w, Range range, bool reversed, double scale) {
-    // Flat ranges (zero-thickness bodies) get a small relative width so the matrix stays finite
-    // and well conditioned.
-    const double minWidth = 1e-6 * scale + 1e-9 * std::max(std::abs(range.lo), std::abs(range.hi)) + 1e-300;
+    // Flat ranges (zero-thickness or edge-on bodies) get a width of at least 1e-4 of the widest
+    // axis: the map never stretches one axis 1e4 times more than another, which keeps the matrix
+    // well conditioned (its rounding at world offsets of 1e5 stays far below the 1e-4 tolerance).
+    const double minWidth = 1e-4 * scale + 1e-9 * std::max(std::abs(range.lo), std::abs(range.hi)) + 1e-300;
     if (range.hi - range.lo < minWidth) {
         const double mid = 0.5 * (range.lo + range.hi);
         range.lo = mid - 0.5 * minWidth;
@@ -267,8 +268,12 @@ SpotFrustum spotFrustum(const ShadowLight& light, const Aabb& sceneBounds) {
             farPlane = std::max(farPlane, glm::dot(sceneBounds.corner(i) - light.position, axis));
     }
     if (!(farPlane > 0.0) || !std::isfinite(farPlane)) return s;  // scene behind the light
-    s.farPlane = farPlane;
-    s.nearPlane = farPlane * kSpotNearFraction;
+    // Near plane: a fixed fraction of far, but never below what double coordinates at this
+    // world offset resolve (1e-7 of the position's magnitude), or the projective light space
+    // loses its precision near the apex.
+    const double m = std::max({std::abs(light.position.x), std::abs(light.position.y), std::abs(light.position.z)});
+    s.nearPlane = std::max(farPlane * kSpotNearFraction, 1e-7 * m);
+    s.farPlane = std::max(farPlane, 2.0 * s.nearPlane);
     const double half = std::clamp(light.outerConeAngle, 1e-3, kMaxSpotHalfAngle);
     ViewFrustum v;
     v.eye = light.position;
