@@ -392,7 +392,7 @@ void runViewer(const ViewerOptions& options) {
                 const InsetRect r = toGl(layout.shadowMapInset, fbHeight);
                 overlays->drawFrame(0, r);
                 if (haveMap) overlays->drawDepthInset(0, r, renderer->shadowMapTexture(), setup.reverseDepthTest);
-                noteFor(layout.shadowMapInset, haveMap ? "shadow map depth" : "shadow map: none this frame");
+                noteFor(layout.shadowMapInset, haveMap ? "shadow map depth" : "no shadow map");
             }
             if (!layout.lightViewInset.empty()) {
                 const InsetRect r = toGl(layout.lightViewInset, fbHeight);
@@ -406,7 +406,7 @@ void runViewer(const ViewerOptions& options) {
                                                      light.direction, marker),
                                         m);
                 }
-                noteFor(layout.lightViewInset, haveMap ? "light view (warped)" : "light view: no shadow map");
+                noteFor(layout.lightViewInset, haveMap ? "light view" : "no light view");
             }
             if (!layout.observerInset.empty() && renderer->gpuScene()) {
                 const InsetRect r = toGl(layout.observerInset, fbHeight);
@@ -421,7 +421,7 @@ void runViewer(const ViewerOptions& options) {
                                     overlayWires(d, settings.overlays, viewFrustum0, scene->bounds, light.direction,
                                                  observer.radius * 0.04),
                                     observer.viewProjection());
-                noteFor(layout.observerInset, "observer: B violet, V blue, S green, P red");
+                noteFor(layout.observerInset, "observer");
             }
         }
         const double frameCpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count();
