@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
@@ -24,24 +25,28 @@ glm::dvec3 newellNormal(const Polygon& f) {
 
 double maxAbsComponent(const glm::dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
 
-double faceExtent(const Polygon& f) {
-    Aabb b;
-    for (const auto& p : f) b.extend(p);
-    const glm::dvec3 e = b.extent();
-    return std::max({e.x, e.y, e.z});
-}
-
 // A face has a usable plane when its area is not negligible against its own extent squared.
+// One pass: Newell normal, centroid and extent together (this runs for every new face).
 bool facePlane(const Polygon& f, glm::dvec4& plane) {
-    if (f.size() < 3) return false;
-    const glm::dvec3 n = newellNormal(f);
+    const std::size_t count = f.size();
+    if (count < 3) return false;
+    const glm::dvec3 o = f[0];
+    glm::dvec3 n{0.0}, c{0.0}, lo{0.0}, hi{0.0};
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 a = f[i] - o, b = f[i + 1 == count ? 0 : i + 1] - o;
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+        c += a;
+        lo = glm::min(lo, a);
+        hi = glm::max(hi, a);
+    }
     const double len = glm::length(n);
-    const double ext = faceExtent(f);
+    const glm::dvec3 e = hi - lo;
+    const double ext = std::max({e.x, e.y, e.z});
     if (!(len > 1e-12 * ext * ext) || !std::isfinite(len)) return false;
     const glm::dvec3 u = n / len;
-    glm::dvec3 c{0.0};
-    for (const auto& p : f) c += p;
-    c /= double(f.size());
+    c = o + c / double(count);
     plane = glm::dvec4(u, -glm::dot(u, c));
     return true;
 }
@@ -82,8 +87,8 @@ Polygon convexPolygonInPlane(const std::vector<glm::dvec3>& pts, const glm::dvec
         double x, y;
         std::size_t i;
     };
-    std::vector<P2> q;
-    q.reserve(pts.size());
+    thread_local std::vector<P2> q;
+    q.clear();
     const glm::dvec3 o = pts[0];
     double ext = 0.0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -97,7 +102,8 @@ Polygon convexPolygonInPlane(const std::vector<glm::dvec3>& pts, const glm::dvec
     auto cross = [](const P2& o2, const P2& a, const P2& b) {
         return (a.x - o2.x) * (b.y - o2.y) - (a.y - o2.y) * (b.x - o2.x);
     };
-    std::vector<P2> hull(2 * q.size());
+    thread_local std::vector<P2> hull;
+    hull.resize(2 * q.size());
     std::size_t k = 0;
     for (std::size_t i = 0; i < q.size(); ++i) {
         while (k >= 2 && cross(hull[k - 2], hull[k - 1], q[i]) <= tol) --k;
@@ -114,6 +120,17 @@ Polygon convexPolygonInPlane(const std::vector<glm::dvec3>& pts, const glm::dvec
     return out;
 }
 
+// Drops exact consecutive duplicates; false when fewer than 3 corners are left. (A sliver that
+// survives is harmless: every operation that needs a face's plane skips faces without one.)
+bool cleanFace(Polygon& f) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < f.size(); ++i)
+        if (k == 0 || f[i] != f[k - 1]) f[k++] = f[i];
+    while (k > 1 && f[0] == f[k - 1]) --k;
+    f.resize(k);
+    return k >= 3;
+}
+
 void removeDegenerateFaces(PolygonList& faces) {
     for (auto& f : faces) {
         // Drop exact consecutive duplicates (e.g. a cut point equal to a vertex).
@@ -127,6 +144,27 @@ void removeDegenerateFaces(PolygonList& faces) {
     glm::dvec4 plane;
     faces.erase(std::remove_if(faces.begin(), faces.end(), [&](const Polygon& f) { return !facePlane(f, plane); }),
                 faces.end());
+}
+
+// Every vertex reference (duplicates included): enough for supporting-plane tests, no sort.
+std::vector<glm::dvec3> allVertexRefs(const PolygonList& faces) {
+    std::vector<glm::dvec3> v;
+    std::size_t count = 0;
+    for (const auto& f : faces) count += f.size();
+    v.reserve(count);
+    for (const auto& f : faces) v.insert(v.end(), f.begin(), f.end());
+    return v;
+}
+
+// Unit normal of the plane through edge (a -> b) reversed and direction d, i.e. of the face
+// (b, a, a + d, ...): (a - b) x d. False when degenerate.
+bool edgeSweepNormal(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d, glm::dvec3& n) {
+    const glm::dvec3 e = a - b;
+    n = glm::cross(e, d);
+    const double len = glm::length(n);
+    if (!(len > 1e-12 * glm::length(e) * glm::length(d)) || !std::isfinite(len)) return false;
+    n /= len;
+    return true;
 }
 
 void orientOutward(PolygonList& faces) {
@@ -243,15 +281,16 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
     const glm::dvec4 plane = planeIn / len;
     const glm::dvec3 n{plane};
     // "On the plane" tolerance, relative to the coordinates involved (rounding scales with them).
-    const double eps = 1e-11 * (bodyScale(faces_) + std::abs(plane.w)) + 1e-300;
-
-    bool anyOutside = false, anyInside = false;
+    double sMin = std::numeric_limits<double>::infinity(), sMax = -sMin, scale = 0.0;
     for (const auto& f : faces_)
         for (const auto& p : f) {
             const double s = glm::dot(n, p) + plane.w;
-            anyOutside |= s > eps;
-            anyInside |= s < -eps;
+            sMin = std::min(sMin, s);
+            sMax = std::max(sMax, s);
+            scale = std::max(scale, maxAbsComponent(p));
         }
+    const double eps = 1e-11 * (scale + std::abs(plane.w)) + 1e-300;
+    const bool anyOutside = sMax > eps, anyInside = sMin < -eps;
     if (!anyOutside) return;  // nothing beyond the plane (vertices on it are kept)
     if (!anyInside) {
         // At most touching the plane: what survives is the (flat) part lying in it, e.g. the
@@ -273,9 +312,10 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
 
     PolygonList out;
     out.reserve(faces_.size() + 1);
-    std::vector<glm::dvec3> capPoints;
-    std::vector<double> s;
-    for (const auto& f : faces_) {
+    thread_local std::vector<glm::dvec3> capPoints;
+    thread_local std::vector<double> s;
+    capPoints.clear();
+    for (auto& f : faces_) {
         s.resize(f.size());
         bool fOut = false, fIn = false;
         for (std::size_t i = 0; i < f.size(); ++i) {
@@ -285,14 +325,14 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
             if (std::abs(s[i]) <= eps) capPoints.push_back(f[i]);
         }
         if (!fOut) {
-            out.push_back(f);
+            out.push_back(std::move(f));  // untouched: already a valid face
             continue;
         }
         if (!fIn) continue;  // entirely beyond (or on) the plane
         Polygon g;
         g.reserve(f.size() + 2);
         for (std::size_t i = 0; i < f.size(); ++i) {
-            const std::size_t j = (i + 1) % f.size();
+            const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
             if (s[i] <= eps) g.push_back(f[i]);
             if ((s[i] < -eps && s[j] > eps) || (s[i] > eps && s[j] < -eps)) {
                 const glm::dvec3 c = cutPoint(f[i], f[j], s[i], s[j]);
@@ -300,12 +340,11 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
                 capPoints.push_back(c);
             }
         }
-        out.push_back(std::move(g));
+        if (cleanFace(g)) out.push_back(std::move(g));
     }
     // Close the hole: the cut points all lie in the plane; the cap faces out along n.
     Polygon cap = convexPolygonInPlane(capPoints, n);
-    if (cap.size() >= 3) out.push_back(std::move(cap));
-    removeDegenerateFaces(out);
+    if (cap.size() >= 3 && cleanFace(cap)) out.push_back(std::move(cap));
     faces_ = std::move(out);
 }
 
@@ -336,11 +375,11 @@ void ConvexBody::clip(const Aabb& box) {
 void ConvexBody::hullWithPoint(const glm::dvec3& q) {
     if (faces_.empty()) return;
     const double eps = 1e-11 * (bodyScale(faces_) + maxAbsComponent(q)) + 1e-300;
-    const std::vector<glm::dvec3> verts = vertices();
+    const std::vector<glm::dvec3> verts = allVertexRefs(faces_);
     PolygonList kept, onPlane;
     std::vector<glm::dvec3> onNormals;
     bool anyFront = false;
-    for (const auto& f : faces_) {
+    for (auto& f : faces_) {
         glm::dvec4 pl;
         if (!facePlane(f, pl)) continue;
         const double s = glm::dot(glm::dvec3(pl), q) + pl.w;
@@ -354,7 +393,24 @@ void ConvexBody::hullWithPoint(const glm::dvec3& q) {
         }
     }
     if (!anyFront) return;  // q inside or on the body
-    PolygonList out = kept;
+    PolygonList out;
+    out.reserve(kept.size() + onPlane.size() + 8);
+    // Fan the silhouette to q: an edge of a remaining face bounds the new fan iff the triangle
+    // (b, a, q) lies in a supporting plane of body + q (a geometric test, robust to T-junctions).
+    auto addFan = [&](const Polygon& f) {
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            const glm::dvec3 a = f[i], b = f[i + 1 == f.size() ? 0 : i + 1];
+            glm::dvec3 n;
+            if (!edgeSweepNormal(a, b, q - a, n)) continue;
+            bool coplanarWithGrown = false;
+            for (const auto& on : onNormals) coplanarWithGrown |= glm::dot(on, n) > 1.0 - 1e-9;
+            if (coplanarWithGrown) continue;
+            if (supports(n, a, verts, eps)) out.push_back(Polygon{b, a, q});
+        }
+    };
+    for (const auto& f : kept) addFan(f);
+    for (const auto& f : onPlane) addFan(f);
+    for (auto& f : kept) out.push_back(std::move(f));
     // Faces coplanar with q become the 2D hull of the face and q.
     for (std::size_t i = 0; i < onPlane.size(); ++i) {
         std::vector<glm::dvec3> pts = onPlane[i];
@@ -362,24 +418,7 @@ void ConvexBody::hullWithPoint(const glm::dvec3& q) {
         Polygon g = convexPolygonInPlane(pts, onNormals[i]);
         if (g.size() >= 3) out.push_back(std::move(g));
     }
-    // Fan the silhouette to q: an edge of a remaining face bounds the new fan iff the triangle
-    // (b, a, q) lies in a supporting plane of body + q (geometric test: robust to T-junctions).
-    auto addFan = [&](const Polygon& f) {
-        for (std::size_t i = 0; i < f.size(); ++i) {
-            const glm::dvec3 a = f[i], b = f[(i + 1) % f.size()];
-            Polygon tri{b, a, q};
-            glm::dvec4 pl;
-            if (!facePlane(tri, pl)) continue;
-            const glm::dvec3 n{pl};
-            bool coplanarWithGrown = false;
-            for (const auto& on : onNormals) coplanarWithGrown |= glm::dot(on, n) > 1.0 - 1e-9;
-            if (coplanarWithGrown) continue;
-            if (supports(n, a, verts, eps)) out.push_back(std::move(tri));
-        }
-    };
-    for (const auto& f : kept) addFan(f);
-    for (const auto& f : onPlane) addFan(f);
-    removeDegenerateFaces(out);
+    // Every face here has a plane: kept faces passed facePlane, fans passed edgeSweepNormal.
     faces_ = std::move(out);
 }
 
@@ -388,7 +427,7 @@ void ConvexBody::extrude(const glm::dvec3& directionIn, const Aabb& box) {
     const double dl = glm::length(directionIn);
     if (!(dl > 0.0) || !std::isfinite(dl)) return;
     const glm::dvec3 u = directionIn / dl;
-    const std::vector<glm::dvec3> verts = vertices();
+    const std::vector<glm::dvec3> verts = allVertexRefs(faces_);
     // Far enough that the moved faces lie beyond the box along u (the caller clips by it).
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const auto& p : verts) lo = std::min(lo, glm::dot(p, u));
@@ -398,9 +437,12 @@ void ConvexBody::extrude(const glm::dvec3& directionIn, const Aabb& box) {
     const glm::dvec3 shift = length * u;
     const double eps = 1e-11 * (bodyScale(faces_) + maxAbsComponent(shift)) + 1e-300;
 
-    PolygonList out, back, parallel;
+    PolygonList out;
+    out.reserve(faces_.size() + 8);
+    std::vector<std::size_t> back;
     std::vector<glm::dvec3> parallelNormals;
-    for (const auto& f : faces_) {
+    for (std::size_t fi = 0; fi < faces_.size(); ++fi) {
+        const Polygon& f = faces_[fi];
         glm::dvec4 pl;
         if (!facePlane(f, pl)) continue;
         const double c = glm::dot(glm::dvec3(pl), u);
@@ -408,38 +450,35 @@ void ConvexBody::extrude(const glm::dvec3& directionIn, const Aabb& box) {
             Polygon g = f;
             for (auto& p : g) p += shift;
             out.push_back(std::move(g));
-        } else if (c >= -1e-9) {  // parallel to u: the face sweeps into a longer face
-            // Sweep within the face's own plane (u is parallel only up to 1e-9), so flat bodies
-            // stay flat and a later clip by a zero-thickness box keeps them.
+        } else if (c >= -1e-9) {
+            // Parallel to u: the face sweeps into a longer face, within its own plane (u is
+            // parallel only up to 1e-9), so flat bodies stay flat and a later clip by a
+            // zero-thickness box keeps them.
             const glm::dvec3 inPlane = shift - glm::dot(shift, glm::dvec3(pl)) * glm::dvec3(pl);
             std::vector<glm::dvec3> pts = f;
             for (const auto& p : f) pts.push_back(p + inPlane);
             Polygon g = convexPolygonInPlane(pts, glm::dvec3(pl));
             if (g.size() >= 3) out.push_back(std::move(g));
             parallelNormals.push_back(glm::dvec3(pl));
-            parallel.push_back(f);
         } else {
-            out.push_back(f);
-            back.push_back(f);
+            back.push_back(fi);
         }
     }
     // Fill the sides with quads along the silhouette edges of the faces that stay.
-    auto addQuads = [&](const Polygon& f) {
+    for (std::size_t fi : back) {
+        const Polygon& f = faces_[fi];
         for (std::size_t i = 0; i < f.size(); ++i) {
-            const glm::dvec3 a = f[i], b = f[(i + 1) % f.size()];
-            Polygon quad{b, a, a + shift, b + shift};
-            glm::dvec4 pl;
-            if (!facePlane(quad, pl)) continue;
-            const glm::dvec3 n{pl};
+            const glm::dvec3 a = f[i], b = f[i + 1 == f.size() ? 0 : i + 1];
+            glm::dvec3 n;
+            if (!edgeSweepNormal(a, b, u, n)) continue;
             bool coplanar = false;
             for (const auto& pn : parallelNormals) coplanar |= glm::dot(pn, n) > 1.0 - 1e-9;
             if (coplanar) continue;
-            if (supports(n, a, verts, eps)) out.push_back(std::move(quad));
+            if (supports(n, a, verts, eps)) out.push_back(Polygon{b, a, a + shift, b + shift});
         }
-    };
-    for (const auto& f : back) addQuads(f);
-    removeDegenerateFaces(out);
-    faces_ = std::move(out);
+    }
+    for (std::size_t fi : back) out.push_back(std::move(faces_[fi]));
+    faces_ = std::move(out);  // moved and back faces passed facePlane, quads edgeSweepNormal
 }
 
 ConvexBody ConvexBody::transformed(const glm::dmat4& m, double wEpsilon) const {
