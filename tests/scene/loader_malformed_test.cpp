@@ -477,6 +477,22 @@ TEST_F(Malformed, CubicSplineAnimationNeedsThreeValuesPerKey) {
     EXPECT_FLOAT_EQ(s.animations[0].duration, 1.0f);
 }
 
+TEST_F(Malformed, InfiniteFarPlaneBecomesFiniteFromTheBounds) {
+    json j = triangleJson();
+    j["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.05}}}}};  // no zfar
+    j["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 10}}});
+    j["scenes"][0]["nodes"] = {0, 1};
+    const Scene s = expectLoads(writeGltf(j));
+    ASSERT_EQ(s.cameras.size(), 1u);
+    EXPECT_FALSE(s.defaultCamera);
+    const Camera& c = s.cameras[0];
+    EXPECT_TRUE(std::isfinite(c.zfar));
+    const double farthest = glm::length(glm::dvec3(c.cameraToWorld[3]) - s.bounds.center()) +
+                            0.5 * glm::length(s.bounds.extent());
+    EXPECT_GE(double(c.zfar), farthest);
+    EXPECT_LT(double(c.zfar), 10.0 * farthest);
+}
+
 // Every prefix of a valid GLB, and random byte corruptions of it, load or fail cleanly.
 TEST_F(Malformed, TruncationsAndCorruptionsNeverCrash) {
     json j = withTexture(triangleJson(""), {{"bufferView", 2}, {"mimeType", "image/png"}});
