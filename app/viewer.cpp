@@ -279,7 +279,7 @@ void runViewer(const ViewerOptions& options) {
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
-        if (dt > 0.0) fps = fps == 0.0 ? 1.0 / dt : fps * 0.95 + 0.05 / dt;
+        if (dt > 0.0 && frame > 0) fps = fps == 0.0 ? 1.0 / dt : fps * 0.95 + 0.05 / dt;
 
         for (const std::string& file : std::exchange(g_droppedFiles, {})) {
             if (std::filesystem::path(file).extension() == ".json") {
@@ -324,7 +324,13 @@ void runViewer(const ViewerOptions& options) {
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
         if (state.showUi) {
-            ui::ControlContext ctx{&stats, &*scene, state.animation, &state.observer, &state.viewState};
+            // The z_f the auto mode picks (thesis 9.2.5), for the LiSPSM panel's slider.
+            const double aspect = fbHeight > 0 ? double(fbWidth - ui::controlWindowWidth()) /
+                                                     double(fbHeight * int(shownMethods(settings).size()))
+                                               : 1.0;
+            const double autoFar =
+                shadowParams(settings, viewFrustum(settings.camera, aspect), scene->bounds).lispsm.virtualFar;
+            ui::ControlContext ctx{&stats, &*scene, state.animation, autoFar, &state.observer, &state.viewState};
             const ui::ControlResult controls = ui::drawControlWindow(settings, ctx, float(fbWidth), float(fbHeight));
             if (controls.changed) sanitize(settings);
             if (controls.requests.save) {

@@ -105,6 +105,11 @@ ObserverCamera observerCamera(const ShadowDiagnostics& d, const ViewFrustum& vie
         if (finite(p)) framed.extend(p);
     if (finite(view.eye)) framed.extend(view.eye);
     if (framed.empty()) framed.extend(glm::dvec3(0.0));
+    // The projection centre C of Fig. 9.1 too, unless it lies so far away (n -> infinity, the
+    // uniform limit) that everything else would shrink to a dot.
+    if (d.hasProjectionCenter && finite(d.projectionCenter) &&
+        glm::distance(d.projectionCenter, framed.center()) < 2.0 * glm::length(framed.extent()))
+        framed.extend(d.projectionCenter);
 
     ObserverCamera cam;
     cam.target = framed.center();

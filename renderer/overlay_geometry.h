@@ -39,7 +39,8 @@ struct ObserverCamera {
 };
 // yawDeg turns around the target starting behind the camera (0 = looking over its shoulder),
 // pitchDeg lifts the observer, distance scales the framing distance (1 = everything just fits).
-// Frames B, the eye and the part of V inside S (a far plane may be huge), else all of V.
+// Frames B, the eye and the part of V inside S (a far plane may be huge), else all of V, and the
+// projection centre when it is not much farther away than those.
 ObserverCamera observerCamera(const ShadowDiagnostics& diagnostics, const ViewFrustum& view, const Aabb& sceneBounds,
                               double yawDeg, double pitchDeg, double distance, double aspect);
 

@@ -118,7 +118,7 @@ bool drawMethodPanel(Settings& s, const FrameStats& stats) {
     return changed;
 }
 
-bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d) {
+bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtualFar) {
     bool changed = false;
     LispsmSettings& l = s.lispsm;
     if (s.method != ShadowMethod::Lispsm) ImGui::TextDisabled("(active only with the LiSPSM method)");
@@ -128,7 +128,9 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d) {
     ImGui::BeginDisabled(l.autoVirtualFar);
     {
         // Log scale: useful values span from a few near-plane distances to the far plane.
-        double zf = l.virtualFar > 0.0 ? l.virtualFar : s.camera.farPlane;
+        double zf = l.autoVirtualFar && std::isfinite(autoVirtualFar) ? autoVirtualFar
+                    : l.virtualFar > 0.0                              ? l.virtualFar
+                                                                      : s.camera.farPlane;
         const double lo = std::max(1e-4, s.camera.nearPlane * 1.01), hi = std::max(lo * 2.0, s.camera.farPlane);
         zf = std::clamp(zf, lo, hi);
         if (sliderDouble("virtual z_f", zf, lo, hi, "%.3g",
@@ -487,7 +489,7 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
 
     if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) result.changed |= drawMethodPanel(s, stats);
     if (ImGui::CollapsingHeader("LiSPSM", s.method == ShadowMethod::Lispsm ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-        result.changed |= drawLispsmPanel(s, stats.shadow);
+        result.changed |= drawLispsmPanel(s, stats.shadow, ctx.autoVirtualFar);
     if (ImGui::CollapsingHeader("PSM")) result.changed |= drawPsmPanel(s, stats.shadow);
     if (ImGui::CollapsingHeader("Bias")) result.changed |= drawBiasPanel(s);
     if (ImGui::CollapsingHeader("Filter & blur")) result.changed |= drawFilterPanel(s);

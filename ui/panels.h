@@ -7,6 +7,7 @@
 #include "scenes/scene.h"
 #include "settings/settings.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,10 @@ namespace shadowlab::ui {
 // Method panel: SSM (focused / unfocused), PSM, LiSPSM; shadows on/off; shadow map resolution.
 bool drawMethodPanel(Settings& settings, const FrameStats& stats);
 // LiSPSM panel (thesis 9.2.5, 9.2.6): virtual z_f (log slider) or auto, body vector, n override;
-// read-outs n, n_opt (real and virtual far), gamma, d, z0, z1.
-bool drawLispsmPanel(Settings& settings, const ShadowDiagnostics& diagnostics);
+// read-outs n, n_opt (real and virtual far), gamma, d, z0, z1. `autoVirtualFar` is the z_f the
+// auto mode picks this frame (shown while auto is on; NaN = unknown).
+bool drawLispsmPanel(Settings& settings, const ShadowDiagnostics& diagnostics,
+                     double autoVirtualFar = std::numeric_limits<double>::quiet_NaN());
 // PSM panel (Stamminger & Drettakis 3, 4.2; thesis 7.2): read-outs of the move-back distance,
 // the near-plane push and the light's kind in post-perspective space.
 bool drawPsmPanel(Settings& settings, const ShadowDiagnostics& diagnostics);
@@ -65,6 +68,7 @@ struct ControlContext {
     const FrameStats* stats = nullptr;
     const Scene* scene = nullptr;
     AnimationInfo animation;
+    double autoVirtualFar = std::numeric_limits<double>::quiet_NaN();  // LiSPSM auto z_f this frame
     ObserverView* observer = nullptr;
     ViewStateUi* viewState = nullptr;
 };
