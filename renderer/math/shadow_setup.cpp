@@ -94,6 +94,33 @@ glm::dmat4 fitToPoints(const glm::dmat4& pre, const std::vector<glm::dvec3>& pts
         ry.add(h.y / h.w);
         rz.add(h.z / h.w);
     }
+    // Rounding: evaluating the final matrix at world coordinates (offsets up to 1e5) differs from
+    // the exact map by about eps * (sum of |terms|) / w. Pad each range by a bound of that, so the
+    // evaluated image of every point still lands inside the clip cube.
+    {
+        const Range* ranges[3] = {&rx, &ry, &rz};
+        double pad[3] = {0.0, 0.0, 0.0};
+        constexpr double kEps = 8.0 * std::numeric_limits<double>::epsilon();
+        for (const auto& p : pts) {
+            const glm::dvec4 ph{p, 1.0};
+            double absW = 0.0;
+            for (int j = 0; j < 4; ++j) absW += std::abs(pre[j][3] * ph[j]);
+            const double w = (pre * ph).w;
+            for (int r = 0; r < 3; ++r) {
+                double absR = 0.0;
+                for (int j = 0; j < 4; ++j) absR += std::abs(pre[j][r] * ph[j]);
+                const double center = 0.5 * std::abs(ranges[r]->lo + ranges[r]->hi);
+                const double t = std::max(std::abs(ranges[r]->lo), std::abs(ranges[r]->hi));
+                pad[r] = std::max(pad[r], kEps * (absR + (t + center) * absW) / std::abs(w));
+            }
+        }
+        rx.lo -= 4.0 * pad[0];
+        rx.hi += 4.0 * pad[0];
+        ry.lo -= 4.0 * pad[1];
+        ry.hi += 4.0 * pad[1];
+        rz.lo -= 4.0 * pad[2];
+        rz.hi += 4.0 * pad[2];
+    }
     // A flat axis (zero-thickness B) gets a width relative to the other axes, so the fit's
     // scale stays bounded and rounding in the composed matrix stays below the tolerance.
     double scale = 0.0;

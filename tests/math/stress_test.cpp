@@ -9,7 +9,7 @@ namespace {
 
 TEST(ShadowStress, RandomConfigurationsHaveNoNanAndContainB) {
     StressOptions options;
-    options.cases = 3000;
+    options.cases = 20000;
     options.seed = 20261122;
     const StressReport report = runStress(options);
     SCOPED_TRACE(report.text());
