@@ -547,3 +547,37 @@ TEST(ShadowSetup, ZeroThicknessSceneStillShadows) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// Shadow-map area (in NDC x/y units) of a small ground square.
+double mapArea(const glm::dmat4& m, glm::dvec3 center, double half) {
+    const glm::dvec3 c[4] = {center + glm::dvec3(-half, 0, -half), center + glm::dvec3(half, 0, -half),
+                             center + glm::dvec3(half, 0, half), center + glm::dvec3(-half, 0, half)};
+    double a = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec3 p = ndc(m, c[i]), q = ndc(m, c[(i + 1) % 4]);
+        a += p.x * q.y - q.x * p.y;
+    }
+    return 0.5 * std::abs(a);
+}
+
+TEST(Warp, LispsmAndPsmGiveNearReceiversMoreOfTheMapThanSsm) {
+    // Sun from the side, overhead-ish: the classic case where SSM wastes texels far away.
+    const ViewFrustum v = groundView();
+    const ShadowLight l = sunFrom({1, -0.6, 0});
+    const glm::dvec3 nearPatch{0, 0, 45}, farPatch{0, 0, -20};
+    auto ratio = [&](ShadowMethod m) {
+        const ShadowSetup s = setupFor(v, l, terrain(), m);
+        EXPECT_TRUE(s.valid);
+        return mapArea(s.worldToShadowClip, nearPatch, 0.5) / mapArea(s.worldToShadowClip, farPatch, 0.5);
+    };
+    const double ssm = ratio(ShadowMethod::SsmFocused);
+    EXPECT_NEAR(ssm, 1.0, 1e-9) << "a uniform map gives equal ground squares equal area";
+    EXPECT_GT(ratio(ShadowMethod::Lispsm), 3.0 * ssm);
+    EXPECT_GT(ratio(ShadowMethod::Psm), 3.0 * ssm);
+}
+
+}  // namespace
+}  // namespace shadowlab
