@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -128,6 +129,42 @@ void checkAssetAndExtensions(const json& root, std::vector<std::string>& warning
                 continue;
             warnings.push_back("optional extension " + name + " is ignored");
         }
+    }
+}
+
+std::string percentDecoded(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            out.push_back(char(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+            i += 2;
+        } else {
+            out.push_back(uri[i]);
+        }
+    }
+    return out;
+}
+
+// External buffer files, checked before tinygltf so that a missing or short file is named with
+// the buffer that needs it (tinygltf's own message is only "File not found").
+void checkExternalBuffers(const json& root, const fs::path& baseDir) {
+    const json* buffers = member(root, "buffers");
+    if (!buffers || !buffers->is_array()) return;
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+        const json* uri = member((*buffers)[i], "uri");
+        if (!uri || !uri->is_string()) continue;
+        const std::string text = uri->get<std::string>();
+        if (text.rfind("data:", 0) == 0) continue;
+        const fs::path file = baseDir / percentDecoded(text);
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec))
+            fail("buffer " + std::to_string(i) + ": external file " + quoted(text) + " not found (" + file.string() + ")");
+        const std::uintmax_t size = fs::file_size(file, ec);
+        const json* length = member((*buffers)[i], "byteLength");
+        if (!ec && length && length->is_number_unsigned() && size < length->get<std::uintmax_t>())
+            fail("buffer " + std::to_string(i) + ": external file " + quoted(text) + " has " + std::to_string(size) +
+                 " bytes, but byteLength is " + std::to_string(length->get<std::uintmax_t>()));
     }
 }
 
@@ -977,6 +1014,7 @@ Scene loadChecked(const fs::path& file, std::vector<std::string>& warnings) {
     }
     const json root = parseJson(jsonText);
     checkAssetAndExtensions(root, warnings);
+    checkExternalBuffers(root, file.parent_path().empty() ? fs::path(".") : file.parent_path());
 
     tinygltf::Model model;
     tinygltf::TinyGLTF gltf;

@@ -10,7 +10,7 @@ namespace {
 
 std::string vec(const glm::dvec3& v) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
+    std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", v.x + 0.0, v.y + 0.0, v.z + 0.0);  // no "-0"
     return buf;
 }
 
