@@ -281,10 +281,14 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
     const glm::dvec4 plane = planeIn / len;
     const glm::dvec3 n{plane};
     // "On the plane" tolerance, relative to the coordinates involved (rounding scales with them).
+    // Signed distances of every vertex reference, computed once for both passes.
+    thread_local std::vector<double> dist;
+    dist.clear();
     double sMin = std::numeric_limits<double>::infinity(), sMax = -sMin, scale = 0.0;
     for (const auto& f : faces_)
         for (const auto& p : f) {
             const double s = glm::dot(n, p) + plane.w;
+            dist.push_back(s);
             sMin = std::min(sMin, s);
             sMax = std::max(sMax, s);
             scale = std::max(scale, maxAbsComponent(p));
@@ -310,42 +314,43 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
         return;
     }
 
-    PolygonList out;
-    out.reserve(faces_.size() + 1);
+    // Faces are compacted in place (untouched faces keep their storage; cut faces reuse it).
     thread_local std::vector<glm::dvec3> capPoints;
-    thread_local std::vector<double> s;
+    thread_local Polygon cut;
     capPoints.clear();
-    for (auto& f : faces_) {
-        s.resize(f.size());
+    std::size_t offset = 0, kept = 0;
+    for (std::size_t fi = 0; fi < faces_.size(); ++fi) {
+        Polygon& f = faces_[fi];
+        const double* s = dist.data() + offset;
+        offset += f.size();
         bool fOut = false, fIn = false;
         for (std::size_t i = 0; i < f.size(); ++i) {
-            s[i] = glm::dot(n, f[i]) + plane.w;
             fOut |= s[i] > eps;
             fIn |= s[i] < -eps;
             if (std::abs(s[i]) <= eps) capPoints.push_back(f[i]);
         }
-        if (!fOut) {
-            out.push_back(std::move(f));  // untouched: already a valid face
-            continue;
-        }
-        if (!fIn) continue;  // entirely beyond (or on) the plane
-        Polygon g;
-        g.reserve(f.size() + 2);
-        for (std::size_t i = 0; i < f.size(); ++i) {
-            const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
-            if (s[i] <= eps) g.push_back(f[i]);
-            if ((s[i] < -eps && s[j] > eps) || (s[i] > eps && s[j] < -eps)) {
-                const glm::dvec3 c = cutPoint(f[i], f[j], s[i], s[j]);
-                g.push_back(c);
-                capPoints.push_back(c);
+        if (!fIn && fOut) continue;  // entirely beyond (or on) the plane: dropped
+        if (fOut) {
+            cut.clear();
+            for (std::size_t i = 0; i < f.size(); ++i) {
+                const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
+                if (s[i] <= eps) cut.push_back(f[i]);
+                if ((s[i] < -eps && s[j] > eps) || (s[i] > eps && s[j] < -eps)) {
+                    const glm::dvec3 c = cutPoint(f[i], f[j], s[i], s[j]);
+                    cut.push_back(c);
+                    capPoints.push_back(c);
+                }
             }
+            if (!cleanFace(cut)) continue;
+            f.assign(cut.begin(), cut.end());
         }
-        if (cleanFace(g)) out.push_back(std::move(g));
+        if (kept != fi) faces_[kept] = std::move(f);
+        ++kept;
     }
+    faces_.resize(kept);
     // Close the hole: the cut points all lie in the plane; the cap faces out along n.
     Polygon cap = convexPolygonInPlane(capPoints, n);
-    if (cap.size() >= 3 && cleanFace(cap)) out.push_back(std::move(cap));
-    faces_ = std::move(out);
+    if (cap.size() >= 3 && cleanFace(cap)) faces_.push_back(std::move(cap));
 }
 
 void ConvexBody::clip(const ConvexBody& other) {
