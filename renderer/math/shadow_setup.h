@@ -51,8 +51,13 @@ struct ShadowLight {
     double range = 0.0;                    // spot only: far distance; <= 0 means "up to the scene bounds"
 };
 
+// LiSPSM options. The warp is built from k = 1/n (thesis 9.2.4 with C at distance n = 1/k from
+// P's near plane): k is computed in closed form from eq. 8.11 (directional) or 8.13 (spot) and is
+// exactly 0 when sin(gamma) = 0 or z1/z0 <= 1, which *is* the focused SSM matrix in the same light
+// frame. So LiSPSM -> SSM continuously as gamma -> 0, with no threshold and no blending weight:
+// the rule is "k -> 0 linearly in sin(gamma)" (k = sin g / (z_n + sqrt(z_n (z_n + d sin g)))).
 struct LispsmParams {
-    bool useBodyVector = false;  // thesis 9.2.6: frame up-vector from B instead of the view direction
+    bool useBodyVector = false;  // thesis 9.2.6 (directional lights only): frame up-vector from B
     double virtualFar = 0.0;     // thesis 9.2.5 / paper 4.4: z_f used for n only; <= 0 or >= zFar: real far
     bool overrideN = false;      // use `n` instead of n_opt
     double n = 1.0;
@@ -66,6 +71,15 @@ struct ShadowParams {
 };
 
 // How the light looks in the camera's post-perspective space (Stamminger & Drettakis 3.1, 3.2).
+// PSM recipe here: B's vertices go through a virtual camera moved back along -forward until all
+// of B is in front of its near plane (4.2), with the near plane pushed to B's nearest depth and
+// the far plane to B's farthest. The light, (-l, 0) or (position, 1), goes through the same
+// matrix: w ~ 0 (farther than 1e4 radii of B') -> Directional (orthographic map along it);
+// w > 0 -> Point; w < 0 -> InvertedPoint (rays converge: the hit farthest from the point is the
+// occluder, so reverseDepthTest = true). The shadow frustum looks from the point at B' and is
+// fitted around it. When the point sees B' only through a frustum wider than 80 degrees (a light
+// close to the infinity plane with a huge far/near ratio), the camera moves back further, step
+// by doubling step: the parameterization degrades continuously toward the uniform map (4.2).
 enum class PostPerspectiveLight { None, Point, InvertedPoint, Directional };
 
 struct ShadowDiagnostics {
@@ -83,7 +97,10 @@ struct ShadowDiagnostics {
     // +infinity means "uniform" (P degenerates to the orthographic SSM fit). `warp` = 1 / nUsed is
     // what the matrix is built from, so the limit n -> infinity is exact and continuous.
     double nUsed = 0.0, nOptReal = 0.0, nOptVirtual = 0.0, warp = 0.0;
-    double gamma = 0.0;  // radians: angle between the frame's up vector (view dir or body vector) and -l
+    // Radians. Directional: angle between the frame's up vector (view direction or body vector)
+    // and l. Spot: angle, in post-projective light space, between the orientation ray (9.2.3) and
+    // the light rays.
+    double gamma = 0.0;
     double d = 0.0;      // light-space z extent of B (thesis 9.2.4)
     double z0 = 0.0, z1 = 0.0;  // eye-space z (negative in front) of the points of eq. 8.13
     // PSM (Stamminger & Drettakis 4.2).
@@ -133,7 +150,11 @@ bool casterCanReach(const ShadowSetup& setup, const Aabb& casterBounds);
 // --- Building blocks, public for tests and the UI ---------------------------------------------
 
 // The spot light's frustum L: a square pyramid circumscribing the cone, apex at the light.
-// nearPlane/farPlane are distances along the axis (far: range, or to the farthest corner of S).
+// nearPlane/farPlane are distances along the axis (far: range, or to the farthest corner of S;
+// near: 1e-4 of far, at least 1e-7 of the light position's magnitude). B stops at the near plane;
+// casterCanReach still keeps casters between the apex and it.
+// Light space for spot lights (thesis 9.2.3): L = L_r L_p L_v^-1 with L_p a GL frustum along -y,
+// so light rays become parallel to y there and the directional machinery applies.
 struct SpotFrustum {
     glm::dmat4 view{1.0}, projection{1.0};
     double nearPlane = 0.0, farPlane = 0.0;
