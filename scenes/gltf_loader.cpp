@@ -911,6 +911,9 @@ struct Converter {
                 if (ch.target_node < 0) continue;  // targets something else (an extension): nothing to move
                 if (std::size_t(ch.target_node) >= m.nodes.size())
                     fail(what + ": node " + std::to_string(ch.target_node) + " does not exist");
+                if (!m.nodes[std::size_t(ch.target_node)].matrix.empty())
+                    warn(what + ": targets node " + std::to_string(ch.target_node) +
+                         ", which has a matrix (glTF forbids animating it; the channel has no effect)");
                 AnimationChannel channel;
                 channel.node = ch.target_node;
                 int components = 3;
