@@ -111,7 +111,8 @@ void buildStreet(GltfBuilder& builder, const GenerateOptions& options) {
             builder.setMesh(builder.addNode("LampPost_" + padded(lampIndex++, 4), t, lampsGroup), lampMesh);
         }
 
-    // Parked cars along both kerbs, none within 12 m of the eye-level cameras.
+    // Parked cars along both kerbs, from 12 m inside the street ends (the eye-level cameras stand
+    // 5 m inside them, so no car blocks their view down the street).
     const int carsGroup = builder.addNode("Cars", {});
     std::size_t carIndex = 0;
     for (int sideSign : {-1, 1}) {
@@ -143,7 +144,7 @@ void buildStreet(GltfBuilder& builder, const GenerateOptions& options) {
     const Preset presets[] = {
         {"Camera_DownStreet_SunBehind", {-2.0, 1.7, halfLength - 5.0}, pitched({0.0, 0.0, -1.0}, -1.0)},
         {"Camera_DownStreet_SunAhead", {2.0, 1.7, -halfLength + 5.0}, pitched({0.0, 0.0, 1.0}, -1.0)},
-        {"Camera_Rooftop", {0.0, 40.0, halfLength - 40.0}, pitched({0.0, 0.0, -1.0}, -12.0)},
+        {"Camera_Rooftop", {0.0, 40.0, halfLength - std::min(40.0, 0.2 * length)}, pitched({0.0, 0.0, -1.0}, -12.0)},
     };
     for (const Preset& preset : presets) {
         const int camera = builder.addPerspectiveCamera(preset.name, 60.0 * kDegree, 0.1, far);
