@@ -338,9 +338,11 @@ struct Converter {
         if (components != wantComponents)
             fail(where + ": is " + typeName(components) + ", expected " + typeName(wantComponents));
         const std::size_t elementSize = std::size_t(csize) * std::size_t(components);
-        if (a.bufferView < 0 && a.count > (std::size_t(1) << 28))
+        if (a.bufferView < 0 && a.count > (std::size_t(1) << 22))
             fail(where + ": count " + std::to_string(a.count) + " without a bufferView is implausible");
         count = a.count;
+        // Index accessors are plain integers even if a file marks them normalized.
+        const bool normalized = a.normalized && !integerOnly;
 
         std::vector<double> out;
         if (a.bufferView >= 0) {
@@ -351,7 +353,7 @@ struct Converter {
             for (std::size_t i = 0; i < a.count; ++i, p += stride)
                 for (int c = 0; c < components; ++c)
                     out[i * std::size_t(components) + std::size_t(c)] =
-                        readComponent(p + std::size_t(c) * std::size_t(csize), a.componentType, a.normalized);
+                        readComponent(p + std::size_t(c) * std::size_t(csize), a.componentType, normalized);
         } else {
             out.assign(a.count * std::size_t(components), 0.0);  // glTF: no bufferView means zeros
         }
@@ -381,7 +383,7 @@ struct Converter {
                          std::to_string(a.count) + ")");
                 for (int c = 0; c < components; ++c)
                     out[target * std::size_t(components) + std::size_t(c)] = readComponent(
-                        values + k * valueStride + std::size_t(c) * std::size_t(csize), a.componentType, a.normalized);
+                        values + k * valueStride + std::size_t(c) * std::size_t(csize), a.componentType, normalized);
             }
         }
         return out;
@@ -579,6 +581,7 @@ struct Converter {
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             mode != TINYGLTF_MODE_TRIANGLE_FAN)
             fail(where + ": unknown primitive mode " + std::to_string(mode));
+        if (!src.targets.empty()) warn(where + ": morph targets are ignored (the base shape is drawn)");
         if (src.material >= int(m.materials.size()))
             fail(where + ": material " + std::to_string(src.material) + " does not exist");
 
@@ -965,6 +968,7 @@ struct Converter {
     }
 
     void convert() {
+        if (!m.skins.empty()) warn(std::to_string(m.skins.size()) + " skin(s) ignored: meshes are drawn in their bind pose");
         convertMaterials();
         convertMeshes();
         convertNodes();
