@@ -41,7 +41,7 @@ namespace {
 
 struct ViewerOptions {
     std::string scene;
-    int frames = 0;  // 0 = run until closed
+    int frames = 0;          // 0 = run until closed
     std::string screenshot;  // written after the last frame
     std::string saveView;    // view state JSON written on exit
     bool noUi = false;       // start with the panels hidden (F1 toggles)
@@ -105,7 +105,8 @@ std::string screenshotName(const Settings& settings) {
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
     std::string methods;
-    for (ShadowMethod m : shownMethods(settings)) methods += (methods.empty() ? "" : "-vs-") + std::string(methodName(m));
+    for (ShadowMethod m : shownMethods(settings))
+        methods += (methods.empty() ? "" : "-vs-") + std::string(methodName(m));
     return "shadowlab-" + methods + "-" + stamp + ".png";
 }
 
@@ -125,7 +126,8 @@ CameraInput readCameraInput(GLFWwindow* window, double dt, glm::dvec2& lastCurso
     }
     if (!io.WantCaptureKeyboard) {
         auto key = [&](int k) { return glfwGetKey(window, k) == GLFW_PRESS ? 1.0 : 0.0; };
-        in.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q), key(GLFW_KEY_W) - key(GLFW_KEY_S)};
+        in.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
+                   key(GLFW_KEY_W) - key(GLFW_KEY_S)};
         in.fast = key(GLFW_KEY_LEFT_SHIFT) > 0.0;
     }
     return in;
@@ -166,7 +168,7 @@ ui::AnimationInfo animationInfo(const Scene& scene) {
 // toGl() flips a rectangle to GL's bottom-left origin.
 struct Layout {
     int fbWidth = 0, fbHeight = 0;
-    int viewWidth = 0;  // the 3D area: left of the control window
+    int viewWidth = 0;             // the 3D area: left of the control window
     std::vector<InsetRect> views;  // top-left origin
     InsetRect shadowMapInset, lightViewInset, observerInset;
 };
@@ -283,8 +285,10 @@ void runViewer(const ViewerOptions& options) {
 
         for (const std::string& file : std::exchange(g_droppedFiles, {})) {
             if (std::filesystem::path(file).extension() == ".json") {
-                if (loadViewFile(file, settings, error)) state.status.lastMessage = "applied view " + file;
-                else state.status.lastError = error;
+                if (loadViewFile(file, settings, error))
+                    state.status.lastMessage = "applied view " + file;
+                else
+                    state.status.lastError = error;
                 continue;
             }
             LoadResult loaded = loadScene(file);
@@ -335,13 +339,16 @@ void runViewer(const ViewerOptions& options) {
             if (controls.changed) sanitize(settings);
             if (controls.requests.save) {
                 const std::string file = state.viewState.file;
-                if (writeTextFile(file, toJsonText(settings), error)) state.status.lastMessage = "saved view " + file;
-                else state.status.lastError = error;
+                if (writeTextFile(file, toJsonText(settings), error))
+                    state.status.lastMessage = "saved view " + file;
+                else
+                    state.status.lastError = error;
             }
             if (controls.requests.load) {
                 if (loadViewFile(state.viewState.file, settings, error))
                     state.status.lastMessage = std::string("loaded view ") + state.viewState.file;
-                else state.status.lastError = error;
+                else
+                    state.status.lastError = error;
             }
             if (controls.requests.screenshot) state.screenshotRequested = true;
         }
@@ -349,7 +356,8 @@ void runViewer(const ViewerOptions& options) {
 
         // The scene clock: glTF animations and the animated sun; saved with the view so headless
         // renders reproduce the frame.
-        if (settings.animation.playing) settings.animation.time = std::max(0.0, settings.animation.time + dt * settings.animation.speed);
+        if (settings.animation.playing)
+            settings.animation.time = std::max(0.0, settings.animation.time + dt * settings.animation.speed);
         if (settings.animation.time != posedTime && animateScene(*scene, settings.animation.time)) {
             // Moving casters: new instance matrices; the renderer recomputes S, B and the map.
             renderer->updateInstances(*scene);
@@ -374,7 +382,8 @@ void runViewer(const ViewerOptions& options) {
                 Settings view = settings;
                 view.method = methods[std::size_t(i)];
                 const InsetRect r = toGl(layout.views[std::size_t(i)], fbHeight);
-                FrameStats viewStats = renderer->render(*scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
+                FrameStats viewStats =
+                    renderer->render(*scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
                 if (methods.size() > 1) {
                     captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, methodName(view.method)});
                     double gpu = 0.0;
@@ -386,8 +395,8 @@ void runViewer(const ViewerOptions& options) {
                 if (i == 0) stats = std::move(viewStats);
             }
 
-            const ViewFrustum viewFrustum0 = viewFrustum(
-                settings.camera, double(layout.views[0].width) / std::max(1, layout.views[0].height));
+            const ViewFrustum viewFrustum0 =
+                viewFrustum(settings.camera, double(layout.views[0].width) / std::max(1, layout.views[0].height));
             const LightFrame light = resolveLight(*scene, settings.light, seconds);
             const bool haveMap = stats.shadowMapSize > 0 && renderer->lastShadowSetup().valid;
             const ShadowSetup& setup = renderer->lastShadowSetup();
@@ -405,7 +414,8 @@ void runViewer(const ViewerOptions& options) {
                 overlays->drawFrame(0, r);
                 if (haveMap && renderer->gpuScene()) {
                     const glm::dmat4 m = positiveWOverBody(setup.worldToShadowClip, setup.diagnostics.bodyB);
-                    overlays->drawScene(0, r, *scene, *renderer->gpuScene(), m, light.direction, setup.reverseDepthTest);
+                    overlays->drawScene(0, r, *scene, *renderer->gpuScene(), m, light.direction,
+                                        setup.reverseDepthTest);
                     const double marker = 0.02 * std::max(1e-3, glm::length(setup.bodyBounds.extent()));
                     overlays->drawWires(0, r,
                                         overlayWires(setup.diagnostics, settings.overlays, viewFrustum0, scene->bounds,
@@ -446,8 +456,10 @@ void runViewer(const ViewerOptions& options) {
                 lastFrame && !options.screenshot.empty() ? options.screenshot : screenshotName(settings);
             RgbaImage shot = readFramebuffer(0, 0, 0, fbWidth, fbHeight);
             state.status.lastError.clear();
-            if (writePng(shot, file, error)) state.status.lastMessage = "saved " + file;
-            else state.status.lastError = error;
+            if (writePng(shot, file, error))
+                state.status.lastMessage = "saved " + file;
+            else
+                state.status.lastError = error;
             std::cerr << "shadowlab: "
                       << (state.status.lastError.empty() ? state.status.lastMessage : state.status.lastError) << "\n";
             state.screenshotRequested = false;

@@ -29,8 +29,10 @@ public:
     }
     ~GlStateGuard() {
         for (std::size_t i = 0; i < kCaps.size(); ++i) {
-            if (enabled_[i]) glEnable(kCaps[i]);
-            else glDisable(kCaps[i]);
+            if (enabled_[i])
+                glEnable(kCaps[i]);
+            else
+                glDisable(kCaps[i]);
         }
         glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
         glScissor(scissor_[0], scissor_[1], scissor_[2], scissor_[3]);
@@ -49,8 +51,8 @@ public:
     GlStateGuard& operator=(const GlStateGuard&) = delete;
 
 private:
-    static constexpr std::array<GLenum, 7> kCaps{GL_DEPTH_TEST, GL_SCISSOR_TEST, GL_DEPTH_CLAMP, GL_BLEND,
-                                                  GL_CULL_FACE, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL};
+    static constexpr std::array<GLenum, 7> kCaps{GL_DEPTH_TEST, GL_SCISSOR_TEST,     GL_DEPTH_CLAMP,        GL_BLEND,
+                                                 GL_CULL_FACE,  GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL};
     std::array<GLboolean, 7> enabled_{};
     std::array<GLint, 4> viewport_{}, scissor_{};
     GLint depthFunc_ = GL_LESS;
@@ -65,7 +67,8 @@ void enterRect(GLuint framebuffer, const InsetRect& r) {
     glViewport(r.x, r.y, r.width, r.height);
     glEnable(GL_SCISSOR_TEST);
     glScissor(r.x, r.y, r.width, r.height);
-    for (GLenum cap : {GL_DEPTH_TEST, GL_DEPTH_CLAMP, GL_BLEND, GL_CULL_FACE, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
+    for (GLenum cap :
+         {GL_DEPTH_TEST, GL_DEPTH_CLAMP, GL_BLEND, GL_CULL_FACE, GL_FRAMEBUFFER_SRGB, GL_POLYGON_OFFSET_FILL})
         glDisable(cap);
 }
 

@@ -10,12 +10,12 @@ namespace shadowlab {
 namespace {
 
 // Thesis figure colours (Fig. 4.2, 8.1, 9.1).
-const glm::vec4 kColorB{0.75f, 0.35f, 1.0f, 1.0f};   // violet
-const glm::vec4 kColorV{0.25f, 0.55f, 1.0f, 1.0f};   // blue
-const glm::vec4 kColorS{0.25f, 0.9f, 0.35f, 1.0f};   // green
-const glm::vec4 kColorP{1.0f, 0.2f, 0.2f, 1.0f};     // red
-const glm::vec4 kColorL{1.0f, 0.6f, 0.1f, 1.0f};     // orange: light frustum and rays
-const glm::vec4 kColorC{1.0f, 1.0f, 0.2f, 1.0f};     // yellow: projection centre
+const glm::vec4 kColorB{0.75f, 0.35f, 1.0f, 1.0f};  // violet
+const glm::vec4 kColorV{0.25f, 0.55f, 1.0f, 1.0f};  // blue
+const glm::vec4 kColorS{0.25f, 0.9f, 0.35f, 1.0f};  // green
+const glm::vec4 kColorP{1.0f, 0.2f, 0.2f, 1.0f};    // red
+const glm::vec4 kColorL{1.0f, 0.6f, 0.1f, 1.0f};    // orange: light frustum and rays
+const glm::vec4 kColorC{1.0f, 1.0f, 0.2f, 1.0f};    // yellow: projection centre
 
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -69,7 +69,8 @@ std::vector<WireSet> overlayWires(const ShadowDiagnostics& d, const OverlaySetti
                 glm::dvec3 side = glm::cross(l, glm::dvec3(0, 1, 0));
                 if (glm::length(side) < 1e-6) side = glm::cross(l, glm::dvec3(1, 0, 0));
                 side = glm::normalize(side) * len * 0.12;
-                rays.segments.insert(rays.segments.end(), {end, end - l * len * 0.2 + side, end, end - l * len * 0.2 - side});
+                rays.segments.insert(rays.segments.end(),
+                                     {end, end - l * len * 0.2 + side, end, end - l * len * 0.2 - side});
             }
             wires.push_back(std::move(rays));
         }

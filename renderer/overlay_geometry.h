@@ -25,8 +25,8 @@ void appendPolygonEdges(const PolygonList& faces, std::vector<glm::dvec3>& segme
 // arm length of the cross marking the projection centre; `lightDirection` (the way light travels)
 // adds a few orange rays through B.
 std::vector<WireSet> overlayWires(const ShadowDiagnostics& diagnostics, const OverlaySettings& overlays,
-                                  const ViewFrustum& view, const Aabb& sceneBounds,
-                                  const glm::dvec3& lightDirection, double markerSize);
+                                  const ViewFrustum& view, const Aabb& sceneBounds, const glm::dvec3& lightDirection,
+                                  double markerSize);
 
 // A look-at + perspective camera standing outside the view frustum and B, looking at both.
 struct ObserverCamera {

@@ -116,8 +116,8 @@ int applyAnimations(Scene& scene, double t) {
     for (const Animation& animation : scene.animations) {
         const double duration = animationDuration(animation);
         // The end of the loop shows the last key rather than jumping back to the first one.
-        const double local = duration > 0.0 && t >= duration && loopTime(t, duration) == 0.0 ? duration
-                                                                                             : loopTime(t, duration);
+        const double local =
+            duration > 0.0 && t >= duration && loopTime(t, duration) == 0.0 ? duration : loopTime(t, duration);
         for (const AnimationChannel& c : animation.channels) {
             if (c.node < 0 || c.node >= int(scene.nodes.size())) continue;
             Node& node = scene.nodes[std::size_t(c.node)];
@@ -125,9 +125,15 @@ int applyAnimations(Scene& scene, double t) {
             const ChannelSample sample = sampleChannel(c, local);
             if (!sample.valid) continue;
             switch (c.path) {
-                case AnimationPath::Translation: node.translation = glm::vec3(sample.value); break;
-                case AnimationPath::Rotation: node.rotation = toQuat(sample.value); break;
-                case AnimationPath::Scale: node.scale = glm::vec3(sample.value); break;
+                case AnimationPath::Translation:
+                    node.translation = glm::vec3(sample.value);
+                    break;
+                case AnimationPath::Rotation:
+                    node.rotation = toQuat(sample.value);
+                    break;
+                case AnimationPath::Scale:
+                    node.scale = glm::vec3(sample.value);
+                    break;
             }
             ++applied;
         }

@@ -21,10 +21,14 @@ const ShadowMethod kMethods[] = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfo
 
 const char* methodLabel(ShadowMethod m) {
     switch (m) {
-        case ShadowMethod::SsmFocused: return "SSM (focused on B)";
-        case ShadowMethod::SsmUnfocused: return "SSM (unfocused, whole scene)";
-        case ShadowMethod::Psm: return "PSM (perspective)";
-        case ShadowMethod::Lispsm: return "LiSPSM (light space perspective)";
+        case ShadowMethod::SsmFocused:
+            return "SSM (focused on B)";
+        case ShadowMethod::SsmUnfocused:
+            return "SSM (unfocused, whole scene)";
+        case ShadowMethod::Psm:
+            return "PSM (perspective)";
+        case ShadowMethod::Lispsm:
+            return "LiSPSM (light space perspective)";
     }
     return "?";
 }
@@ -86,10 +90,14 @@ std::string degrees(double radians) { return formatNumber(radians * 180.0 / 3.14
 
 const char* postPerspectiveName(PostPerspectiveLight kind) {
     switch (kind) {
-        case PostPerspectiveLight::None: return "none (PSM not active)";
-        case PostPerspectiveLight::Point: return "point (light in front of the camera)";
-        case PostPerspectiveLight::InvertedPoint: return "inverted point (light behind the camera)";
-        case PostPerspectiveLight::Directional: return "directional (light parallel to the view plane)";
+        case PostPerspectiveLight::None:
+            return "- (PSM not active)";
+        case PostPerspectiveLight::Point:
+            return "point";
+        case PostPerspectiveLight::InvertedPoint:
+            return "inverted point";
+        case PostPerspectiveLight::Directional:
+            return "directional";
     }
     return "?";
 }
@@ -158,8 +166,7 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtual
 
     ImGui::Separator();
     readout("n used", formatNumber(d.nUsed), "The n the LiSPSM matrix was built with this frame (+inf = uniform).");
-    readout("n_opt (real z_f)", formatNumber(d.nOptReal),
-            "Thesis eq. 8.13 (9.2.5) evaluated with the real far plane.");
+    readout("n_opt (real z_f)", formatNumber(d.nOptReal), "Thesis eq. 8.13 (9.2.5) evaluated with the real far plane.");
     readout("n_opt (virtual z_f)", formatNumber(d.nOptVirtual),
             "Thesis eq. 8.13 with the virtual far plane z_f (9.2.5); used unless n is overridden.");
     readout("gamma", degrees(d.gamma),
@@ -180,9 +187,11 @@ bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
             "The virtual camera's near plane pushed forward as far as B allows, which spends less of the map on "
             "the space in front of the viewer (Stamminger & Drettakis 4.2, 6).");
     readout("virtual far", formatNumber(d.psmFar), "Far plane of the virtual PSM camera.");
-    readout("light after projection", postPerspectiveName(d.psmLightKind),
-            "What the light becomes in post-perspective space: a directional light turns into a point light, or an "
-            "inverted point light when it lies behind the viewer (Stamminger & Drettakis 3.1, 3.2; thesis 7.2.3).");
+    readout("light kind (PPS)", postPerspectiveName(d.psmLightKind),
+            "What the light becomes in the camera's post-perspective space: a directional light from in front of the "
+            "viewer becomes a point light, one from behind an inverted point light (rays converge; the depth test is "
+            "reversed), one parallel to the view plane stays directional (Stamminger & Drettakis 3.1, 3.2; thesis "
+            "7.2.3).");
     return false;
 }
 
@@ -233,7 +242,8 @@ bool drawFilterPanel(Settings& s) {
     changed |= checkbox("depth-dependent", f.depthDependentBlur,
                         "Shrink the blur kernel with depth so small distant shadows are not smeared (thesis 9.4.2).");
     changed |= sliderDouble("strength", f.blurStrength, 0.0, 8.0, "%.2f",
-                            "Blur kernel width in pixels per pass (thesis 6.3).");
+                            "Blur kernel width in pixels per pass: wider hides more projection aliasing but softens "
+                            "contact shadows (thesis 6.3, 9.4.2).");
     ImGui::EndDisabled();
     bool termOnly = s.viewMode == ViewMode::ShadowTermOnly;
     if (checkbox("shadow term only", termOnly,
@@ -250,18 +260,22 @@ bool drawLightPanel(Settings& s, const Scene& scene) {
     LightSettings& l = s.light;
     // One list: the glTF lights, then the two lights set by angles.
     std::string current;
-    if (l.source == LightSource::Sun) current = "Sun (azimuth / elevation)";
-    else if (l.source == LightSource::Spot) current = "Spot (position, azimuth / elevation)";
-    else if (l.sceneLight < int(scene.lights.size())) current = "glTF: " + scene.lights[std::size_t(l.sceneLight)].name;
-    else current = "glTF light " + std::to_string(l.sceneLight) + " (missing)";
+    if (l.source == LightSource::Sun)
+        current = "Sun (azimuth / elevation)";
+    else if (l.source == LightSource::Spot)
+        current = "Spot (position, azimuth / elevation)";
+    else if (l.sceneLight < int(scene.lights.size()))
+        current = "glTF: " + scene.lights[std::size_t(l.sceneLight)].name;
+    else
+        current = "glTF light " + std::to_string(l.sceneLight) + " (missing)";
     if (ImGui::BeginCombo("light", current.c_str())) {
         for (std::size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& light = scene.lights[i];
             const char* kind = light.type == LightType::Directional ? "directional"
                                : light.type == LightType::Spot      ? "spot"
                                                                     : "point, no shadow";
-            const std::string name = "glTF: " + (light.name.empty() ? "light " + std::to_string(i) : light.name) + " (" +
-                                     kind + ")##" + std::to_string(i);
+            const std::string name = "glTF: " + (light.name.empty() ? "light " + std::to_string(i) : light.name) +
+                                     " (" + kind + ")##" + std::to_string(i);
             const bool selected = l.source == LightSource::Scene && l.sceneLight == int(i);
             if (ImGui::Selectable(name.c_str(), selected)) {
                 changed |= !selected;
@@ -300,16 +314,20 @@ bool drawLightPanel(Settings& s, const Scene& scene) {
         tip("Where the spot light stands (world units). Spot lights add their frustum L to B (thesis eq. 4.2).");
         changed |= sliderDouble("cone", l.spotOuterConeDeg, 1.0, 89.0, "%.1f deg",
                                 "Outer cone half-angle; the light frustum L circumscribes it (thesis 9.2.2).");
-        changed |= dragDouble("range", l.spotRange, 0.1f, 0.0, 1e6, "%.1f",
-                              "Far distance of the spot frustum; 0 = up to the scene bounds.");
+        changed |=
+            dragDouble("range", l.spotRange, 0.1f, 0.0, 1e6, "%.1f",
+                       "Far distance of the spot frustum L; 0 = up to the scene bounds (thesis eq. 4.2, 9.2.2).");
     }
     glm::vec3 color(l.color);
     if (ImGui::ColorEdit3("colour", &color.x)) {
         l.color = glm::dvec3(color);
         changed = true;
     }
-    tip("Light colour (linear).");
-    changed |= sliderDouble("intensity", l.intensity, 0.0, 20.0, "%.2f", "Light brightness (relative radiance).");
+    tip("Light colour (linear). Diffuse lighting fades light towards grazing angles, which hides projection aliasing "
+        "(thesis 6.2, 9.4.1).");
+    changed |= sliderDouble("intensity", l.intensity, 0.0, 20.0, "%.2f",
+                            "Light brightness (relative radiance); the lit-vs-ambient contrast decides how visible "
+                            "shadow aliasing is (thesis 6.2, 9.4.1).");
     changed |= sliderDouble("ambient", l.ambient, 0.0, 1.0, "%.2f",
                             "Global ambient term, never shadowed. Keep it low: a strong ambient term reveals "
                             "projection aliasing that diffuse lighting hides (thesis 6.2, 9.4.1).");
@@ -318,7 +336,8 @@ bool drawLightPanel(Settings& s, const Scene& scene) {
                         "Turn the sun around the scene with the scene clock (Animation panel), to see the methods "
                         "cope with every light angle, including light behind the viewer (thesis 7.2.2, 8.3).");
     changed |= sliderDouble("sun speed", l.sunDegreesPerSecond, -90.0, 90.0, "%.1f deg/s",
-                            "Degrees of azimuth per second of scene time.");
+                            "Degrees of azimuth per second of scene time. A moving light forces the shadow map to be "
+                            "regenerated every frame (Scherzer, robust shadow maps 1.1: dynamic environments).");
     ImGui::EndDisabled();
     return changed;
 }
@@ -352,10 +371,11 @@ bool drawCameraPanel(Settings& s, const Scene& scene) {
         helpMarker("Jump to a camera of the glTF file (its position, direction, fov, near and far; roll is dropped).");
         for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
             const Camera& cam = scene.cameras[i];
-            const std::string label = (cam.name.empty() ? "camera " + std::to_string(i) : cam.name) + "##cam" +
-                                      std::to_string(i);
+            const std::string label =
+                (cam.name.empty() ? "camera " + std::to_string(i) : cam.name) + "##cam" + std::to_string(i);
             if (i % 2 != 0) ImGui::SameLine();
-            if (ImGui::Button(label.c_str(), ImVec2(ImGui::GetContentRegionAvail().x * (i % 2 == 0 ? 0.5f : 1.0f) - 4.0f, 0))) {
+            if (ImGui::Button(label.c_str(),
+                              ImVec2(ImGui::GetContentRegionAvail().x * (i % 2 == 0 ? 0.5f : 1.0f) - 4.0f, 0))) {
                 c = cameraFromScene(cam, c);
                 changed = true;
             }
@@ -378,7 +398,9 @@ bool drawAnimationPanel(Settings& s, const AnimationInfo& info) {
         a.time = 0.0;
         changed = true;
     }
-    changed |= sliderDouble("speed##anim", a.speed, -4.0, 4.0, "%.2fx", "Playback rate of the scene clock.");
+    changed |= sliderDouble("speed##anim", a.speed, -4.0, 4.0, "%.2fx",
+                            "Playback rate of the scene clock (moving casters and light: the dynamic environments of "
+                            "Scherzer, robust shadow maps 1.1; Stamminger & Drettakis 6, Fig. 9).");
     if (info.duration > 0.0) {
         // Scrub inside the current loop; the clock itself keeps running so the sun keeps turning.
         const double loops = std::floor(a.time / info.duration);
@@ -424,9 +446,13 @@ bool drawOverlayPanel(Settings& s, ObserverView& observer) {
                         "show their frustum L (orange).");
     ImGui::BeginDisabled(!o.observerInset);
     sliderDouble("observer yaw", observer.yawDeg, -180.0, 180.0, "%.0f deg",
-                 "Where the observer stands around the camera (viewer only, not saved).");
-    sliderDouble("observer pitch", observer.pitchDeg, -10.0, 89.0, "%.0f deg", "Observer height angle.");
-    sliderDouble("observer distance", observer.distance, 0.3, 5.0, "%.2fx", "Observer distance (x the framing distance).");
+                 "Where the third-person observer stands around the camera, as in thesis Figs. 4.2, 8.1, 9.1 (viewer "
+                 "only, not saved).");
+    sliderDouble("observer pitch", observer.pitchDeg, -10.0, 89.0, "%.0f deg",
+                 "Observer height angle above the horizon (thesis Figs. 4.2, 8.1, 9.1 look from above).");
+    sliderDouble("observer distance", observer.distance, 0.3, 5.0, "%.2fx",
+                 "Observer distance, x the distance at which B, the camera and the visible part of V just fit (thesis "
+                 "Fig. 9.1).");
     ImGui::EndDisabled();
     return changed;
 }
@@ -446,7 +472,9 @@ bool drawComparePanel(Settings& s) {
     for (int i = 0; i < 3; ++i) {
         ImGui::BeginDisabled(i >= c.count);
         const std::string label = "view " + std::to_string(i + 1);
-        changed |= methodCombo(label.c_str(), c.methods[std::size_t(i)], "Method of this split view.");
+        changed |= methodCombo(
+            label.c_str(), c.methods[std::size_t(i)],
+            "Method of this split view (thesis 8.3, Figs. 8.10-8.12 compare LiSPSM with uniform maps this way).");
         ImGui::EndDisabled();
     }
     ImGui::EndDisabled();

@@ -42,9 +42,9 @@ bool drawAnimationPanel(Settings& settings, const AnimationInfo& info);
 
 // The third-person observer of the overlay inset (viewer-local, not part of the view state).
 struct ObserverView {
-    double yawDeg = 35.0;     // around the view frustum, relative to the camera's back
-    double pitchDeg = 35.0;   // above the horizon
-    double distance = 1.0;    // x the distance that frames V, B and the camera
+    double yawDeg = 35.0;    // around the view frustum, relative to the camera's back
+    double pitchDeg = 35.0;  // above the horizon
+    double distance = 1.0;   // x the distance that frames V, B and the camera
 };
 // Overlays panel: the insets (shadow map depth, light view, observer) and which of B, V, S, P
 // their wireframes show.

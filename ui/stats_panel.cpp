@@ -45,15 +45,17 @@ void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, cons
         ImGui::EndTable();
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("CPU: time spent issuing each pass; GPU: GL_TIME_ELAPSED timer queries, read a few frames "
-                          "later so the CPU never waits.");
+        ImGui::SetTooltip(
+            "CPU: time spent issuing each pass; GPU: GL_TIME_ELAPSED timer queries, read a few frames "
+            "later so the CPU never waits.");
     ImGui::Text("triangles drawn %zu (scene %zu)", stats.trianglesDrawn, status.sceneTriangles);
     ImGui::Text("draw calls %zu, instances visible %zu", stats.drawCalls, stats.instancesVisible);
     if (stats.shadowMapSize > 0) {
         ImGui::Text("shadow map %d x %d", stats.shadowMapSize, stats.shadowMapSize);
         ImGui::Text("casters drawn %zu, culled %zu", stats.castersDrawn, stats.castersCulled);
-        helpMarker("Casters whose bounds cannot reach the intersection body B are not drawn into the shadow map "
-                   "(thesis 4.2, 9.2.2).");
+        helpMarker(
+            "Casters whose bounds cannot reach the intersection body B are not drawn into the shadow map "
+            "(thesis 4.2, 9.2.2).");
     } else {
         ImGui::TextDisabled("no shadow map this frame");
     }

@@ -11,9 +11,9 @@ namespace shadowlab::ui {
 struct ViewerStatus {
     std::string sceneName;
     std::size_t sceneTriangles = 0;
-    std::string renderer;    // GL_RENDERER
-    std::string lastError;   // e.g. a dropped file that failed to load
-    std::string lastMessage;  // e.g. "saved screenshot ..."
+    std::string renderer;                   // GL_RENDERER
+    std::string lastError;                  // e.g. a dropped file that failed to load
+    std::string lastMessage;                // e.g. "saved screenshot ..."
     std::vector<std::string> compareLines;  // one per split-compare view
 };
 

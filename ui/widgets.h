@@ -14,8 +14,8 @@ void helpMarker(const char* text);
 void tip(const char* text);
 
 // Double-precision widgets (the settings are doubles); `tooltip` as in tip().
-bool sliderDouble(const char* label, double& value, double min, double max, const char* format,
-                  const char* tooltip, ImGuiSliderFlags flags = 0);
+bool sliderDouble(const char* label, double& value, double min, double max, const char* format, const char* tooltip,
+                  ImGuiSliderFlags flags = 0);
 bool dragDouble(const char* label, double& value, float speed, double min, double max, const char* format,
                 const char* tooltip, ImGuiSliderFlags flags = 0);
 bool checkbox(const char* label, bool& value, const char* tooltip);

@@ -43,7 +43,7 @@ TEST(AnimationSampler, LinearTranslationInterpolatesAndClamps) {
                            {glm::vec4(0, 0, 0, 0), glm::vec4(4, -2, 8, 0)});
     expectNear(sampleChannel(c, 2.0).value, {2, -1, 4, 0});
     expectNear(sampleChannel(c, 1.5).value, {1, -0.5f, 2, 0});
-    expectNear(sampleChannel(c, -5.0).value, {0, 0, 0, 0});  // before the first key: the first value
+    expectNear(sampleChannel(c, -5.0).value, {0, 0, 0, 0});   // before the first key: the first value
     expectNear(sampleChannel(c, 99.0).value, {4, -2, 8, 0});  // after the last key: the last value
 }
 
@@ -101,9 +101,9 @@ TEST(AnimationSampler, BadChannelsAreRejectedNotRead) {
                                        {glm::vec4(0), glm::vec4(1)}),
                                0.5)
                      .valid);
-    EXPECT_FALSE(sampleChannel(channel(AnimationPath::Translation, Interpolation::Linear, {0.0f}, {glm::vec4(1)}),
-                               std::nan(""))
-                     .valid);
+    EXPECT_FALSE(
+        sampleChannel(channel(AnimationPath::Translation, Interpolation::Linear, {0.0f}, {glm::vec4(1)}), std::nan(""))
+            .valid);
     // A zero quaternion key becomes the identity instead of NaN.
     const auto zero = channel(AnimationPath::Rotation, Interpolation::Step, {0.0f}, {glm::vec4(0)});
     expectNear(sampleChannel(zero, 0.0).value, {0, 0, 0, 1});
@@ -121,11 +121,11 @@ TEST(AnimationSampler, ApplySkipsMissingAndMatrixNodes) {
     scene.nodes[1].hasMatrix = true;
     Animation anim;
     auto c = channel(AnimationPath::Translation, Interpolation::Linear, {0.0f, 1.0f}, {glm::vec4(0), glm::vec4(2)});
-    anim.channels.push_back(c);             // node 0: applied
+    anim.channels.push_back(c);  // node 0: applied
     c.node = 1;
-    anim.channels.push_back(c);             // matrix node: skipped
+    anim.channels.push_back(c);  // matrix node: skipped
     c.node = 7;
-    anim.channels.push_back(c);             // no such node: skipped
+    anim.channels.push_back(c);  // no such node: skipped
     scene.animations.push_back(anim);
     EXPECT_EQ(applyAnimations(scene, 0.5), 1);
     EXPECT_NEAR(scene.nodes[0].translation.x, 1.0f, 1e-6f);
@@ -140,7 +140,8 @@ TEST(AnimationSampler, ApplySkipsMissingAndMatrixNodes) {
 class BoxAnimatedTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        const std::filesystem::path file = std::filesystem::path(SHADOWLAB_SHARED_SCENES) / "BoxAnimated/glTF/BoxAnimated.gltf";
+        const std::filesystem::path file =
+            std::filesystem::path(SHADOWLAB_SHARED_SCENES) / "BoxAnimated/glTF/BoxAnimated.gltf";
         if (!std::filesystem::exists(file)) GTEST_SKIP() << "missing " << file;
         LoadResult r = loadScene(file);
         ASSERT_TRUE(r.ok()) << r.error;

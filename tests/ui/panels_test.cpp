@@ -76,7 +76,8 @@ TEST_F(ImGuiFrameTest, EveryPanelDrawsForEveryMethodAndLight) {
     Scene scene = sceneWithLightsAndCameras();
     ShadowDiagnostics d;
     d.psmLightKind = PostPerspectiveLight::InvertedPoint;
-    for (ShadowMethod m : {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Psm, ShadowMethod::Lispsm})
+    for (ShadowMethod m :
+         {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Psm, ShadowMethod::Lispsm})
         for (LightSource src : {LightSource::Scene, LightSource::Sun, LightSource::Spot}) {
             Settings s;
             s.method = m;

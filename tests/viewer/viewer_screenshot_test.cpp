@@ -59,8 +59,7 @@ std::string viewPatch(const std::string& overlays, const std::string& extra = ""
            (extra.empty() ? "" : ", " + extra) + "}";
 }
 
-const std::string kNoOverlays =
-    "{\"shadowMapInset\": false, \"lightViewInset\": false, \"observerInset\": false}";
+const std::string kNoOverlays = "{\"shadowMapInset\": false, \"lightViewInset\": false, \"observerInset\": false}";
 
 struct ViewerRun {
     RgbaImage image;
@@ -163,7 +162,8 @@ TEST(ViewerUnderXvfb, EachInsetToggleChangesItsInsetAndNothingElse) {
     for (const char* toggle : toggles) {
         std::string overlays = "{";
         for (const char* t : toggles)
-            overlays += std::string(overlays.size() > 1 ? ", " : "") + "\"" + t + "\": " + (t == toggle ? "true" : "false");
+            overlays +=
+                std::string(overlays.size() > 1 ? ", " : "") + "\"" + t + "\": " + (t == toggle ? "true" : "false");
         overlays += "}";
         const ViewerRun& run = runViewer(toggle, viewPatch(overlays));
         runs.push_back(&run);
@@ -180,10 +180,12 @@ TEST(ViewerUnderXvfb, EachInsetToggleChangesItsInsetAndNothingElse) {
 }
 
 TEST(ViewerUnderXvfb, WireframeTogglesChangeTheObserverInset) {
-    const std::string on = "{\"shadowMapInset\": false, \"lightViewInset\": false, \"observerInset\": true, "
-                           "\"drawB\": true, \"drawV\": true, \"drawS\": true, \"drawP\": true}";
-    const std::string off = "{\"shadowMapInset\": false, \"lightViewInset\": false, \"observerInset\": true, "
-                            "\"drawB\": false, \"drawV\": false, \"drawS\": false, \"drawP\": false}";
+    const std::string on =
+        "{\"shadowMapInset\": false, \"lightViewInset\": false, \"observerInset\": true, "
+        "\"drawB\": true, \"drawV\": true, \"drawS\": true, \"drawP\": true}";
+    const std::string off =
+        "{\"shadowMapInset\": false, \"lightViewInset\": false, \"observerInset\": true, "
+        "\"drawB\": false, \"drawV\": false, \"drawS\": false, \"drawP\": false}";
     const ViewerRun& with = runViewer("wires-on", viewPatch(on));
     const ViewerRun& without = runViewer("wires-off", viewPatch(off));
     ASSERT_GT(with.image.width, 0);
@@ -227,9 +229,9 @@ TEST(ViewerUnderXvfb, SavedViewIsWhatRenderTakesAndReproducesTheFrame) {
     const fs::path saved = workDir() / "saved-view.json";
     fs::remove(saved);
     const int w = 480, h = 270;
-    const ViewerRun& shot = runViewer("save-view",
-                                viewPatch(kNoOverlays, "\"method\": \"psm\", \"bias\": {\"backFaces\": true}"),
-                                "--no-ui --save-view " + quoted(saved), w, h);
+    const ViewerRun& shot =
+        runViewer("save-view", viewPatch(kNoOverlays, "\"method\": \"psm\", \"bias\": {\"backFaces\": true}"),
+                  "--no-ui --save-view " + quoted(saved), w, h);
     ASSERT_GT(shot.image.width, 0);
     ASSERT_TRUE(fs::exists(saved)) << shot.log;
     const std::string text = readFile(saved);
