@@ -317,7 +317,12 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
     // Faces are compacted in place (untouched faces keep their storage; cut faces reuse it).
     thread_local std::vector<glm::dvec3> capPoints;
     thread_local Polygon cut;
+    // The cap's edges when the plane passes through no vertex: each cut face contributes the
+    // reverse of its new edge (exit -> entry); chained, they form the cap loop exactly.
+    thread_local std::vector<std::pair<glm::dvec3, glm::dvec3>> capEdges;
     capPoints.clear();
+    capEdges.clear();
+    bool anyOnPlane = false;
     std::size_t offset = 0, kept = 0;
     for (std::size_t fi = 0; fi < faces_.size(); ++fi) {
         Polygon& f = faces_[fi];
@@ -327,11 +332,16 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
         for (std::size_t i = 0; i < f.size(); ++i) {
             fOut |= s[i] > eps;
             fIn |= s[i] < -eps;
-            if (std::abs(s[i]) <= eps) capPoints.push_back(f[i]);
+            if (std::abs(s[i]) <= eps) {
+                capPoints.push_back(f[i]);
+                anyOnPlane = true;
+            }
         }
         if (!fIn && fOut) continue;  // entirely beyond (or on) the plane: dropped
         if (fOut) {
             cut.clear();
+            glm::dvec3 exitPoint{0.0}, entryPoint{0.0};
+            int exits = 0, entries = 0;
             for (std::size_t i = 0; i < f.size(); ++i) {
                 const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
                 if (s[i] <= eps) cut.push_back(f[i]);
@@ -339,8 +349,17 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
                     const glm::dvec3 c = cutPoint(f[i], f[j], s[i], s[j]);
                     cut.push_back(c);
                     capPoints.push_back(c);
+                    if (s[i] < 0.0) {
+                        exitPoint = c;
+                        ++exits;
+                    } else {
+                        entryPoint = c;
+                        ++entries;
+                    }
                 }
             }
+            if (exits == 1 && entries == 1) capEdges.emplace_back(entryPoint, exitPoint);
+            else anyOnPlane = true;  // unusual topology: build the cap from the points instead
             if (!cleanFace(cut)) continue;
             f.assign(cut.begin(), cut.end());
         }
@@ -349,7 +368,24 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
     }
     faces_.resize(kept);
     // Close the hole: the cut points all lie in the plane; the cap faces out along n.
-    Polygon cap = convexPolygonInPlane(capPoints, n);
+    Polygon cap;
+    if (!anyOnPlane && capEdges.size() >= 3) {
+        cap.reserve(capEdges.size());
+        glm::dvec3 at = capEdges[0].first;
+        for (std::size_t step = 0; step < capEdges.size(); ++step) {
+            cap.push_back(at);
+            bool found = false;
+            for (const auto& e : capEdges)
+                if (e.first == at) {
+                    at = e.second;
+                    found = true;
+                    break;
+                }
+            if (!found) break;
+        }
+        if (cap.size() != capEdges.size() || at != capEdges[0].first) cap.clear();  // not one closed loop
+    }
+    if (cap.empty()) cap = convexPolygonInPlane(capPoints, n);
     if (cap.size() >= 3 && cleanFace(cap)) faces_.push_back(std::move(cap));
 }
 
@@ -371,8 +407,14 @@ void ConvexBody::clip(const Aabb& box) {
     }
     const glm::dvec4 planes[6] = {{1, 0, 0, -box.max.x}, {-1, 0, 0, box.min.x}, {0, 1, 0, -box.max.y},
                                   {0, -1, 0, box.min.y}, {0, 0, 1, -box.max.z}, {0, 0, -1, box.min.z}};
-    for (const auto& p : planes) {
-        clip(p);
+    // The body's bounds tell which box planes can cut at all (stale bounds after a cut are still
+    // conservative: they only ever shrink).
+    const Aabb b = bounds();
+    const bool crosses[6] = {b.max.x > box.max.x, b.min.x < box.min.x, b.max.y > box.max.y,
+                             b.min.y < box.min.y, b.max.z > box.max.z, b.min.z < box.min.z};
+    for (int i = 0; i < 6; ++i) {
+        if (!crosses[i]) continue;
+        clip(planes[i]);
         if (faces_.empty()) return;
     }
 }
