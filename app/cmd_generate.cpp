@@ -57,6 +57,9 @@ void addGenerateCommand(CLI::App& app) {
                     "amount of content: object count and area at constant density (0.01 .. 16; "
                     "plane-box and chessboard only 1)")
         ->capture_default_str();
+    std::string scenes = "Scenes (scenes/README.md):\n";
+    for (const scenegen::GeneratorInfo& g : scenegen::generators()) scenes += "  " + g.name + ": " + g.summary + "\n";
+    cmd->footer(scenes);
     cmd->callback([options] { runGenerate(*options); });
 }
 
