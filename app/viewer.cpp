@@ -18,6 +18,7 @@
 #include "stats_panel.h"
 #include "widgets.h"
 #include "view_setup.h"
+#include "view_state.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -90,26 +91,6 @@ struct ImGuiSession {
     }
 };
 
-// The methods on screen: one, or the split-compare list.
-std::vector<ShadowMethod> shownMethods(const Settings& settings) {
-    if (settings.compare.count <= 1) return {settings.method};
-    std::vector<ShadowMethod> methods;
-    for (int i = 0; i < settings.compare.count && i < int(settings.compare.methods.size()); ++i)
-        methods.push_back(settings.compare.methods[std::size_t(i)]);
-    return methods;
-}
-
-// shadowlab-lispsm-20260101-120000.png, or shadowlab-ssm-vs-psm-vs-lispsm-... for split views.
-std::string screenshotName(const Settings& settings) {
-    std::time_t now = std::time(nullptr);
-    char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-    std::string methods;
-    for (ShadowMethod m : shownMethods(settings))
-        methods += (methods.empty() ? "" : "-vs-") + std::string(methodName(m));
-    return "shadowlab-" + methods + "-" + stamp + ".png";
-}
-
 CameraInput readCameraInput(GLFWwindow* window, double dt, glm::dvec2& lastCursor, double& scrollAccumulator) {
     CameraInput in;
     in.dt = dt;
@@ -180,7 +161,7 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
     l.fbWidth = fbWidth;
     l.fbHeight = fbHeight;
     l.viewWidth = showUi ? std::max(16, fbWidth - int(ui::controlWindowWidth())) : fbWidth;
-    const int count = int(shownMethods(settings).size());
+    const int count = int(ui::shownMethods(settings).size());
     for (int i = 0; i < count; ++i) {
         const int x0 = l.viewWidth * i / count, x1 = l.viewWidth * (i + 1) / count;
         l.views.push_back({x0, 0, std::max(1, x1 - x0 - (i + 1 < count ? 2 : 0)), fbHeight});
@@ -330,7 +311,7 @@ void runViewer(const ViewerOptions& options) {
         if (state.showUi) {
             // The z_f the auto mode picks (thesis 9.2.5), for the LiSPSM panel's slider.
             const double aspect = fbHeight > 0 ? double(fbWidth - ui::controlWindowWidth()) /
-                                                     double(fbHeight * int(shownMethods(settings).size()))
+                                                     double(fbHeight * int(ui::shownMethods(settings).size()))
                                                : 1.0;
             const double autoFar =
                 shadowParams(settings, viewFrustum(settings.camera, aspect), scene->bounds).lispsm.virtualFar;
@@ -377,7 +358,7 @@ void runViewer(const ViewerOptions& options) {
             glClearBufferfv(GL_COLOR, 0, clear);
             // Right to left, so the left view (whose shadow map and setup the insets and read-outs
             // show) is rendered last.
-            const std::vector<ShadowMethod> methods = shownMethods(settings);
+            const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
             for (int i = int(methods.size()) - 1; i >= 0; --i) {
                 Settings view = settings;
                 view.method = methods[std::size_t(i)];
@@ -407,7 +388,7 @@ void runViewer(const ViewerOptions& options) {
                 const InsetRect r = toGl(layout.shadowMapInset, fbHeight);
                 overlays->drawFrame(0, r);
                 if (haveMap) overlays->drawDepthInset(0, r, renderer->shadowMapTexture(), setup.reverseDepthTest);
-                noteFor(layout.shadowMapInset, haveMap ? "shadow map depth" : "no shadow map");
+                noteFor(layout.shadowMapInset, haveMap ? "shadow map" : "no shadow map");
             }
             if (!layout.lightViewInset.empty()) {
                 const InsetRect r = toGl(layout.lightViewInset, fbHeight);
@@ -453,7 +434,7 @@ void runViewer(const ViewerOptions& options) {
         const bool lastFrame = options.frames > 0 && frame + 1 >= options.frames;
         if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
             const std::string file =
-                lastFrame && !options.screenshot.empty() ? options.screenshot : screenshotName(settings);
+                lastFrame && !options.screenshot.empty() ? options.screenshot : ui::screenshotFileName(settings, std::time(nullptr));
             RgbaImage shot = readFramebuffer(0, 0, 0, fbWidth, fbHeight);
             state.status.lastError.clear();
             if (writePng(shot, file, error))

@@ -2,6 +2,7 @@
 // read-out (including the degenerate ones), leave the settings alone without input, and a
 // simulated click edits exactly the setting under the mouse.
 #include "panels.h"
+#include "view_state.h"
 #include "widgets.h"
 
 #include <gtest/gtest.h>
@@ -171,6 +172,27 @@ TEST(Widgets, FormatNumberNamesTheDegenerateValues) {
     EXPECT_EQ(formatNumber(-std::numeric_limits<double>::infinity()), "-inf");
     EXPECT_EQ(formatNumber(std::nan("")), "n/a");
     EXPECT_EQ(formatNumber(1.5), "1.5");
+}
+
+}  // namespace
+}  // namespace shadowlab::ui
+
+namespace shadowlab::ui {
+namespace {
+
+TEST(ViewState, ScreenshotNamesIncludeTheMethods) {
+    Settings s;
+    s.method = ShadowMethod::Psm;
+    const std::string single = screenshotFileName(s, 0);
+    EXPECT_EQ(single.rfind("shadowlab-psm-", 0), 0u) << single;
+    EXPECT_EQ(single.substr(single.size() - 4), ".png");
+    s.compare.count = 3;
+    s.compare.methods = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Lispsm};
+    EXPECT_EQ(screenshotFileName(s, 0).rfind("shadowlab-ssm-vs-ssm-unfocused-vs-lispsm-", 0), 0u);
+    s.compare.count = 2;
+    EXPECT_EQ(shownMethods(s), (std::vector<ShadowMethod>{ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused}));
+    s.compare.methods.clear();  // a hand-edited view without a list still shows something
+    EXPECT_EQ(shownMethods(s), std::vector<ShadowMethod>{ShadowMethod::Psm});
 }
 
 }  // namespace
