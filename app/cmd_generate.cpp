@@ -52,7 +52,9 @@ void addGenerateCommand(CLI::App& app) {
     // Not CLI::IsMember: an unknown name should exit through our own message and exit code.
     cmd->add_option("name", options->name, "scene to generate: " + scenegen::generatorNameList())->required();
     cmd->add_option("--out,-o", options->out, "binary glTF file to write (.glb)")->required();
-    cmd->add_option("--seed", options->seed, "random seed (same seed, byte-identical file)")->capture_default_str();
+    cmd->add_option("--seed", options->seed, "random seed (same seed, byte-identical file)")
+        ->check(CLI::NonNegativeNumber)  // CLI11 would wrap -1 into 2^64 - 1
+        ->capture_default_str();
     cmd->add_option("--scale", options->scale,
                     "amount of content: object count and area at constant density (0.01 .. 16; "
                     "plane-box and chessboard only 1)")

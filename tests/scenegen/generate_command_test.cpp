@@ -67,6 +67,10 @@ TEST(GenerateCommand, BadOptionsFailWithAMessage) {
     EXPECT_NE(runShadowlab({"generate", "forest", "--out", (outDir() / "f.glb").string(), "--scale", "abc"}), 0);
     testing::internal::GetCapturedStderr();
     testing::internal::CaptureStderr();
+    EXPECT_NE(runShadowlab({"generate", "plane-box", "--out", (outDir() / "neg.glb").string(), "--seed", "-1"}), 0);
+    testing::internal::GetCapturedStderr();
+    EXPECT_FALSE(fs::exists(outDir() / "neg.glb"));
+    testing::internal::CaptureStderr();
     EXPECT_NE(runShadowlab({"generate", "forest"}), 0) << "--out is required";
     testing::internal::GetCapturedStderr();
 }
