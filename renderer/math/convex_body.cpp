@@ -236,7 +236,7 @@ ConvexBody ConvexBody::fromAabb(const Aabb& box) {
 std::vector<glm::dvec3> ConvexBody::vertices() const {
     std::vector<glm::dvec3> v;
     for (const auto& f : faces_) v.insert(v.end(), f.begin(), f.end());
-    std::sort(v.begin(), v.end(), lexLess);
+    std::sort(v.begin(), v.end(), [](const glm::dvec3& a, const glm::dvec3& b) { return lexLess(a, b); });
     v.erase(std::unique(v.begin(), v.end()), v.end());
     return v;
 }

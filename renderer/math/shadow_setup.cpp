@@ -653,7 +653,10 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     }
 
     // e_world (thesis 9.2.3) from L n V n S (V n S for directional lights).
-    const glm::dvec3 eWorld = nearestVisiblePoint(visibleLit.empty() ? B : visibleLit, view, basis);
+    // (Only LiSPSM and the spot frame's orientation ray need it.)
+    const bool needE = spot || params.method == ShadowMethod::Lispsm;
+    const glm::dvec3 eWorld =
+        needE ? nearestVisiblePoint(visibleLit.empty() ? B : visibleLit, view, basis) : view.eye;
 
     // The frame's up vector: view direction, or the body vector (thesis 9.2.6, directional only).
     glm::dvec3 up = basis.forward;
@@ -664,7 +667,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         if (len > 0.0 && std::isfinite(len)) up = sum / len;
         else diag.fallback = "body vector is zero: the view direction is used";
     }
-    const double rayLength = std::max(glm::length(B.bounds().extent()), view.zNear);
+    const double rayLength = std::max(glm::length(out.bodyBounds.extent()), view.zNear);
     const LightSpace ls = makeLightSpace(light, l, up, spotF, eWorld, basis.forward, rayLength, view.eye);
 
     // SSM in the same light frame (k = 0): the limit LiSPSM converges to (thesis 8.2.3).
