@@ -345,14 +345,14 @@ ConvexBody intersectionBody(const ViewFrustum& view, const ShadowLight& light, c
         if (visibleLit) *visibleLit = ConvexBody();
         return ConvexBody();
     }
-    const ConvexBody lightBody = spotBody(light, spot);
+    const std::vector<glm::dvec4> lightPlanes = spotBody(light, spot).planes();
     if (visibleLit) {
         *visibleLit = body;
-        visibleLit->clip(lightBody);
+        for (const auto& p : lightPlanes) visibleLit->clip(p);
     }
     body.hullWithPoint(light.position);  // convexHullWithPoint(lightPos)
     body.clip(sceneBounds);
-    body.clip(lightBody);
+    for (const auto& p : lightPlanes) body.clip(p);  // clip(lightFrustum)
     return body;
 }
 
