@@ -96,6 +96,8 @@ struct ShadowDiagnostics {
     // LiSPSM (thesis 9.2.5). n is the distance of C to P's near plane in light space; a value of
     // +infinity means "uniform" (P degenerates to the orthographic SSM fit). `warp` = 1 / nUsed is
     // what the matrix is built from, so the limit n -> infinity is exact and continuous.
+    // nOptVirtual equals nOptReal when no virtual far plane is in effect (virtualFar <= zNear or
+    // >= zFar). d, z0, z1 are those of the body n was computed from (the virtual one if used).
     double nUsed = 0.0, nOptReal = 0.0, nOptVirtual = 0.0, warp = 0.0;
     // Radians. Directional: angle between the frame's up vector (view direction or body vector)
     // and l. Spot: angle, in post-projective light space, between the orientation ray (9.2.3) and
@@ -137,7 +139,10 @@ struct ShadowSetup {
 };
 
 // Never throws; bad input (NaN, zero vectors, near >= far) gives valid == false with the reason in
-// diagnostics.fallback.
+// diagnostics.fallback. SSM (focused and unfocused) uses the same light frame as LiSPSM (the
+// view direction projected onto the shadow plane points "up" in the map), so LiSPSM with n = inf
+// is exactly SSM. SsmUnfocused fits the whole scene box (spot: S n L) instead of B.
+// B is computed once per call; the cost is a few microseconds (see tests/bench).
 ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
                                const ShadowParams& params);
 
