@@ -581,3 +581,27 @@ TEST(Warp, LispsmAndPsmGiveNearReceiversMoreOfTheMapThanSsm) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+TEST(Warp, SpotLispsmGivesNearReceiversMoreOfTheMapThanSsm) {
+    // A spot high above and to the side, lighting the whole visible stretch of ground.
+    const ViewFrustum v = groundView();
+    ShadowLight l;
+    l.kind = ShadowLightKind::Spot;
+    l.position = {60, 40, 10};
+    l.direction = glm::normalize(glm::dvec3(0, 0, 10) - l.position);
+    l.outerConeAngle = glm::radians(60.0);
+    const glm::dvec3 nearPatch{0, 0, 45}, farPatch{0, 0, -20};
+    auto ratio = [&](ShadowMethod m) {
+        const ShadowSetup s = setupFor(v, l, terrain(), m);
+        EXPECT_TRUE(s.valid);
+        return mapArea(s.worldToShadowClip, nearPatch, 0.5) / mapArea(s.worldToShadowClip, farPatch, 0.5);
+    };
+    const double ssm = ratio(ShadowMethod::SsmFocused), lispsm = ratio(ShadowMethod::Lispsm);
+    EXPECT_GT(lispsm, 2.0 * ssm) << "ssm " << ssm << " lispsm " << lispsm;
+}
+
+}  // namespace
+}  // namespace shadowlab
