@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "gl/debug_output.h"
 #include "overlay.h"
+#include "overlay_timer.h"
 #include "panels.h"
 #include "render_target.h"
 #include "renderer.h"
@@ -234,6 +235,9 @@ void runViewer(const ViewerOptions& options) {
         std::cerr << "shadowlab: " << error << "\n";
         throw CLI::RuntimeError(1);
     }
+    // GPU time of each split view (sections 0-2) and of the overlays (section 3).
+    constexpr int kOverlaySection = 3;
+    SectionTimer sectionTimer(4);
     // The pose at the saved time, so a loaded view shows the frame it was saved at.
     animateScene(*scene, settings.animation.time);
     renderer->setScene(*scene);
@@ -363,19 +367,23 @@ void runViewer(const ViewerOptions& options) {
                 Settings view = settings;
                 view.method = methods[std::size_t(i)];
                 const InsetRect r = toGl(layout.views[std::size_t(i)], fbHeight);
+                sectionTimer.begin(i);
                 FrameStats viewStats =
                     renderer->render(*scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
+                sectionTimer.end(i);
                 if (methods.size() > 1) {
                     captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, methodName(view.method)});
-                    double gpu = 0.0;
-                    for (const PassStats& p : viewStats.passes) gpu += p.gpuMs;
                     compareLines.insert(compareLines.begin(), std::string(methodName(view.method)) + ": GPU " +
-                                                                  ui::formatNumber(gpu, 3) + " ms, casters " +
-                                                                  std::to_string(viewStats.castersDrawn));
+                                                                  ui::formatNumber(sectionTimer.lastMs(i), 3) +
+                                                                  " ms, casters " +
+                                                                  std::to_string(viewStats.castersDrawn) + " (culled " +
+                                                                  std::to_string(viewStats.castersCulled) + ")");
                 }
                 if (i == 0) stats = std::move(viewStats);
             }
 
+            const auto overlayStart = Clock::now();
+            sectionTimer.begin(kOverlaySection);
             const ViewFrustum viewFrustum0 =
                 viewFrustum(settings.camera, double(layout.views[0].width) / std::max(1, layout.views[0].height));
             const LightFrame light = resolveLight(*scene, settings.light, seconds);
@@ -420,6 +428,12 @@ void runViewer(const ViewerOptions& options) {
                                     observer.viewProjection());
                 noteFor(layout.observerInset, "observer");
             }
+            sectionTimer.end(kOverlaySection);
+            sectionTimer.endFrame();
+            if (!layout.shadowMapInset.empty() || !layout.lightViewInset.empty() || !layout.observerInset.empty())
+                stats.passes.push_back({"overlays",
+                                        std::chrono::duration<double, std::milli>(Clock::now() - overlayStart).count(),
+                                        sectionTimer.lastMs(kOverlaySection)});
         }
         const double frameCpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count();
 
@@ -433,8 +447,9 @@ void runViewer(const ViewerOptions& options) {
 
         const bool lastFrame = options.frames > 0 && frame + 1 >= options.frames;
         if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
-            const std::string file =
-                lastFrame && !options.screenshot.empty() ? options.screenshot : ui::screenshotFileName(settings, std::time(nullptr));
+            const std::string file = lastFrame && !options.screenshot.empty()
+                                         ? options.screenshot
+                                         : ui::screenshotFileName(settings, std::time(nullptr));
             RgbaImage shot = readFramebuffer(0, 0, 0, fbWidth, fbHeight);
             state.status.lastError.clear();
             if (writePng(shot, file, error))
