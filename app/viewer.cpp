@@ -259,6 +259,7 @@ void runViewer(const ViewerOptions& options) {
     auto last = Clock::now();
     double fps = 0.0;
     double posedTime = settings.animation.time;
+    std::string windowTitle;
     FrameStats stats;
     for (int frame = 0; !glfwWindowShouldClose(window.get()); ++frame) {
         if (options.frames > 0 && frame >= options.frames) break;
@@ -309,6 +310,12 @@ void runViewer(const ViewerOptions& options) {
                 if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false)) settings.method = byKey[k];
             if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) settings.animation.playing = !settings.animation.playing;
         }
+
+        // The title names the scene and the method(s) on screen.
+        std::string title = "shadowlab - " + std::filesystem::path(state.status.sceneName).filename().string() + " - ";
+        for (ShadowMethod m : ui::shownMethods(settings))
+            title += std::string(title.back() == ' ' ? "" : " | ") + methodName(m);
+        if (title != windowTitle) glfwSetWindowTitle(window.get(), (windowTitle = title).c_str());
 
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
