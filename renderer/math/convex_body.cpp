@@ -281,17 +281,27 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
     const glm::dvec4 plane = planeIn / len;
     const glm::dvec3 n{plane};
     // "On the plane" tolerance, relative to the coordinates involved (rounding scales with them).
+    // Fast path: most clips of a body cut nothing (every vertex strictly inside).
+    {
+        double sMax = -std::numeric_limits<double>::infinity();
+        for (const auto& f : faces_)
+            for (const auto& p : f) sMax = std::max(sMax, glm::dot(n, p) + plane.w);
+        if (sMax <= 0.0) return;
+    }
     // Signed distances of every vertex reference, computed once for both passes.
     thread_local std::vector<double> dist;
-    dist.clear();
+    std::size_t refs = 0;
+    for (const auto& f : faces_) refs += f.size();
+    dist.resize(refs);
     double sMin = std::numeric_limits<double>::infinity(), sMax = -sMin, scale = 0.0;
+    std::size_t r = 0;
     for (const auto& f : faces_)
         for (const auto& p : f) {
-            const double s = glm::dot(n, p) + plane.w;
-            dist.push_back(s);
+            const double s = n.x * p.x + n.y * p.y + n.z * p.z + plane.w;
+            dist[r++] = s;
             sMin = std::min(sMin, s);
             sMax = std::max(sMax, s);
-            scale = std::max(scale, maxAbsComponent(p));
+            scale = std::max(scale, std::max(std::max(std::abs(p.x), std::abs(p.y)), std::abs(p.z)));
         }
     const double eps = 1e-11 * (scale + std::abs(plane.w)) + 1e-300;
     const bool anyOutside = sMax > eps, anyInside = sMin < -eps;
@@ -332,30 +342,38 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
         for (std::size_t i = 0; i < f.size(); ++i) {
             fOut |= s[i] > eps;
             fIn |= s[i] < -eps;
-            if (std::abs(s[i]) <= eps) {
-                capPoints.push_back(f[i]);
-                anyOnPlane = true;
-            }
+            if (std::abs(s[i]) <= eps) capPoints.push_back(f[i]);
         }
         if (!fIn && fOut) continue;  // entirely beyond (or on) the plane: dropped
-        if (fOut) {
+        if (!fOut) {
+            // Kept whole. An edge lying in the plane may border the hole: let the point hull
+            // build the cap then.
+            for (std::size_t i = 0; i < f.size(); ++i) {
+                const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
+                if (std::abs(s[i]) <= eps && std::abs(s[j]) <= eps) anyOnPlane = true;
+            }
+        } else {
             cut.clear();
+            // The clipped face leaves the inside at `exitPoint` and comes back at `entryPoint`
+            // (cut points, or vertices lying on the plane); the cap gets the reverse edge.
             glm::dvec3 exitPoint{0.0}, entryPoint{0.0};
             int exits = 0, entries = 0;
             for (std::size_t i = 0; i < f.size(); ++i) {
                 const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
                 if (s[i] <= eps) cut.push_back(f[i]);
-                if ((s[i] < -eps && s[j] > eps) || (s[i] > eps && s[j] < -eps)) {
-                    const glm::dvec3 c = cutPoint(f[i], f[j], s[i], s[j]);
+                glm::dvec3 c{0.0};
+                const bool crossing = (s[i] < -eps && s[j] > eps) || (s[i] > eps && s[j] < -eps);
+                if (crossing) {
+                    c = cutPoint(f[i], f[j], s[i], s[j]);
                     cut.push_back(c);
                     capPoints.push_back(c);
-                    if (s[i] < 0.0) {
-                        exitPoint = c;
-                        ++exits;
-                    } else {
-                        entryPoint = c;
-                        ++entries;
-                    }
+                }
+                if (s[i] <= eps && s[j] > eps) {
+                    exitPoint = crossing ? c : f[i];
+                    ++exits;
+                } else if (s[i] > eps && s[j] <= eps) {
+                    entryPoint = crossing ? c : f[j];
+                    ++entries;
                 }
             }
             if (exits == 1 && entries == 1) capEdges.emplace_back(entryPoint, exitPoint);
