@@ -4,7 +4,8 @@
 //
 // Controls: left drag looks, right drag orbits, wheel dollies, W/A/S/D/Q/E fly (shift: faster),
 // 1-4 pick SSM / SSM unfocused / PSM / LiSPSM, space plays/pauses, F1 hides the panels,
-// F12 saves a screenshot named after the method(s). Dropping a .json file applies a view state,
+// F12 saves a screenshot named after the method(s); dragging or scrolling over the observer inset
+// turns and zooms the observer. Dropping a .json file applies a view state,
 // dropping a .gltf/.glb opens it.
 #include "camera_controller.h"
 #include "commands.h"
@@ -31,6 +32,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -344,7 +346,25 @@ void runViewer(const ViewerOptions& options) {
             }
             if (controls.requests.screenshot) state.screenshotRequested = true;
         }
-        controller.apply(settings.camera, readCameraInput(window.get(), dt, lastCursor, g_scroll));
+        CameraInput input = readCameraInput(window.get(), dt, lastCursor, g_scroll);
+        {
+            // Dragging (either button) or scrolling over the observer inset moves the observer, not
+            // the camera. Cursor positions are in window coordinates: scale them to framebuffer pixels.
+            const InsetRect obs = layoutFrame(fbWidth, fbHeight, state.showUi, settings).observerInset;
+            int winWidth = 1, winHeight = 1;
+            glfwGetWindowSize(window.get(), &winWidth, &winHeight);
+            const double sx = double(fbWidth) / std::max(1, winWidth), sy = double(fbHeight) / std::max(1, winHeight);
+            const double cx = lastCursor.x * sx, cy = lastCursor.y * sy;
+            if (!obs.empty() && cx >= obs.x && cx < obs.x + obs.width && cy >= obs.y && cy < obs.y + obs.height) {
+                const glm::dvec2 drag = input.lookDelta + input.orbitDelta;
+                state.observer.yawDeg = std::remainder(state.observer.yawDeg + drag.x * 0.4, 360.0);
+                state.observer.pitchDeg = std::clamp(state.observer.pitchDeg + drag.y * 0.4, -10.0, 89.0);
+                state.observer.distance = std::clamp(state.observer.distance * std::pow(0.9, input.scroll), 0.3, 5.0);
+                input.lookDelta = input.orbitDelta = glm::dvec2(0.0);
+                input.scroll = 0.0;
+            }
+        }
+        controller.apply(settings.camera, input);
 
         // The scene clock: glTF animations and the animated sun; saved with the view so headless
         // renders reproduce the frame.

@@ -447,7 +447,7 @@ bool drawOverlayPanel(Settings& s, ObserverView& observer) {
     ImGui::BeginDisabled(!o.observerInset);
     sliderDouble("observer yaw", observer.yawDeg, -180.0, 180.0, "%.0f deg",
                  "Where the third-person observer stands around the camera, as in thesis Figs. 4.2, 8.1, 9.1 (viewer "
-                 "only, not saved).");
+                 "only, not saved). Dragging over the observer inset turns it, the wheel zooms.");
     sliderDouble("observer pitch", observer.pitchDeg, -10.0, 89.0, "%.0f deg",
                  "Observer height angle above the horizon (thesis Figs. 4.2, 8.1, 9.1 look from above).");
     sliderDouble("observer distance", observer.distance, 0.3, 5.0, "%.2fx",
