@@ -493,6 +493,16 @@ ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
     r.screenshot = ImGui::Button("screenshot (F12)");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png (window with panels) in the working directory.");
+    if (ImGui::TreeNode("keys and mouse")) {
+        ImGui::TextUnformatted(
+            "left drag: look     right drag: orbit     wheel: dolly\n"
+            "W A S D Q E: fly (shift: 4x)\n"
+            "1 2 3 4: SSM, SSM unfocused, PSM, LiSPSM\n"
+            "space: play / pause     F1: hide panels     F12: screenshot\n"
+            "drag / wheel over the observer inset: move the observer\n"
+            "drop a .json: apply a view     drop a .gltf/.glb: open it");
+        ImGui::TreePop();
+    }
     return r;
 }
 
