@@ -4,6 +4,7 @@
 #include "headless_context.h"
 #include "render_target.h"
 #include "renderer.h"
+#include "scenes/animation.h"
 #include "view_setup.h"
 
 #include <CLI/CLI.hpp>
@@ -43,6 +44,8 @@ void runRender(const RenderOptions& options) {
     gl::installDebugOutput(debugLog);
     auto renderer = Renderer::create(error);
     if (!renderer) fail(error);
+    // The view's time poses glTF animations exactly as the viewer showed them.
+    animateScene(*scene, settings.animation.time);
     renderer->setScene(*scene);
 
     const bool all = options.overrides.method == "all";

@@ -16,7 +16,8 @@ public:
     void resolveBlocking();
 
 private:
-    static constexpr int kRing = 4;
+    // Deep enough for a split-compare frame (3 views) in flight for a few frames without a stall.
+    static constexpr int kRing = 16;
     std::array<gl::Query, kRing> queries_;
     std::array<bool, kRing> pending_{};
     int next_ = 0;

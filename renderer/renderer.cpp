@@ -63,6 +63,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(),
                 resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}, {}};
     stats.lightNote = frame.light.note;
+    lastSetup_ = ShadowSetup{};  // a frame without shadows must not show the previous frame's B
     if (!gpuScene_) return stats;
 
     if (settings.shadows && frame.light.castsShadow) {
