@@ -32,6 +32,7 @@ bool facePlane(const Polygon& f, glm::dvec4& plane) {
     if (count < 3) return false;
     const glm::dvec3 o = f[0];
     glm::dvec3 n{0.0}, c{0.0}, lo{0.0}, hi{0.0};
+    const double magnitude = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)});
     for (std::size_t i = 0; i < count; ++i) {
         const glm::dvec3 a = f[i] - o, b = f[i + 1 == count ? 0 : i + 1] - o;
         n.x += (a.y - b.y) * (a.z + b.z);
@@ -44,7 +45,9 @@ bool facePlane(const Polygon& f, glm::dvec4& plane) {
     const double len = glm::length(n);
     const glm::dvec3 e = hi - lo;
     const double ext = std::max({e.x, e.y, e.z});
-    if (!(len > 1e-12 * ext * ext) || !std::isfinite(len)) return false;
+    // len = 2 * area ~ extent * width. A sliver whose width is down at the rounding level of its
+    // coordinates (1e-11 of their magnitude) has a meaningless normal: no plane for it.
+    if (!(len > ext * (1e-12 * ext + 1e-11 * magnitude)) || !std::isfinite(len)) return false;
     const glm::dvec3 u = n / len;
     c = o + c / double(count);
     plane = glm::dvec4(u, -glm::dot(u, c));
@@ -342,20 +345,18 @@ void ConvexBody::clip(const glm::dvec4& planeIn) {
         for (std::size_t i = 0; i < f.size(); ++i) {
             fOut |= s[i] > eps;
             fIn |= s[i] < -eps;
-            if (std::abs(s[i]) <= eps) capPoints.push_back(f[i]);
+            if (std::abs(s[i]) <= eps) {
+                // A vertex in the plane: the chained cap below needs every boundary point to be
+                // a cut point, so the point hull builds the cap instead.
+                capPoints.push_back(f[i]);
+                anyOnPlane = true;
+            }
         }
         if (!fIn && fOut) continue;  // entirely beyond (or on) the plane: dropped
-        if (!fOut) {
-            // Kept whole. An edge lying in the plane may border the hole: let the point hull
-            // build the cap then.
-            for (std::size_t i = 0; i < f.size(); ++i) {
-                const std::size_t j = i + 1 == f.size() ? 0 : i + 1;
-                if (std::abs(s[i]) <= eps && std::abs(s[j]) <= eps) anyOnPlane = true;
-            }
-        } else {
+        if (fOut) {
             cut.clear();
-            // The clipped face leaves the inside at `exitPoint` and comes back at `entryPoint`
-            // (cut points, or vertices lying on the plane); the cap gets the reverse edge.
+            // The clipped face leaves the inside at `exitPoint` and comes back at `entryPoint`;
+            // the cap gets the reverse edge.
             glm::dvec3 exitPoint{0.0}, entryPoint{0.0};
             int exits = 0, entries = 0;
             for (std::size_t i = 0; i < f.size(); ++i) {

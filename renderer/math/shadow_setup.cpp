@@ -345,14 +345,20 @@ ConvexBody intersectionBody(const ViewFrustum& view, const ShadowLight& light, c
         if (visibleLit) *visibleLit = ConvexBody();
         return ConvexBody();
     }
+    // L's side planes all pass through the apex, and the cone is invariant under scaling about
+    // it, so hull(K + apex) n L = hull((K n L) + apex) n {L's near plane} (its far plane is
+    // perpendicular to the axis, so the hull of points within it stays within it). Clipping
+    // V n S by L first and then taking the hull gives the same B as the thesis' order, with the
+    // side clips done on the smaller body.
     const std::vector<glm::dvec4> lightPlanes = spotBody(light, spot).planes();
-    if (visibleLit) {
-        *visibleLit = body;
-        for (const auto& p : lightPlanes) visibleLit->clip(p);
-    }
+    const glm::dvec3 axis = glm::normalize(light.direction);
+    for (const auto& p : lightPlanes) body.clip(p);  // L n V n S
+    if (visibleLit) *visibleLit = body;
+    if (body.empty()) return body;
     body.hullWithPoint(light.position);  // convexHullWithPoint(lightPos)
     body.clip(sceneBounds);
-    for (const auto& p : lightPlanes) body.clip(p);  // clip(lightFrustum)
+    for (const auto& p : lightPlanes)
+        if (glm::dot(glm::dvec3(p), -axis) > 0.999) body.clip(p);  // L's near plane
     return body;
 }
 
