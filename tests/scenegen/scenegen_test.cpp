@@ -4,6 +4,7 @@
 #include "scenes/generators/scene_generators.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -26,8 +27,18 @@ using scenegen::generateScene;
 constexpr double kPi = std::numbers::pi;
 
 fs::path tempDir() {
-    const fs::path dir = fs::path(::testing::TempDir()) / "shadowlab_scenegen_tests";
+    // One folder per process: CTest runs these tests in parallel processes (-j), and other
+    // builds may run them at the same time, so a shared folder would race on the same files.
+    const fs::path dir = fs::path(::testing::TempDir()) / ("shadowlab_scenegen_tests_" + std::to_string(::getpid()));
     fs::create_directories(dir);
+    // Removed when the test process ends.
+    static const struct Cleanup {
+        fs::path path;
+        ~Cleanup() {
+            std::error_code ignored;
+            fs::remove_all(path, ignored);
+        }
+    } cleanup{dir};
     return dir;
 }
 
