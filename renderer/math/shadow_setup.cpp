@@ -635,11 +635,13 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     if (spot) {
         // Culling must not lose casters between the apex and L's near plane (B stops there):
         // drop that plane and let the bounds reach the light.
+        // The near cap faces the light (normal -axis) at depth `nearPlane`; its plane, fitted to
+        // a possibly tiny face at a large offset, is only approximate, so match it loosely (any
+        // light-facing plane that close to the apex: dropping one is conservative anyway).
         const glm::dvec3 axis = l;
-        const double nearD = glm::dot(axis, light.position) + spotF.nearPlane;
-        const double tol = 1e-9 * (std::abs(nearD) + spotF.farPlane);
         std::erase_if(out.bodyPlanes, [&](const glm::dvec4& p) {
-            return glm::dot(glm::dvec3(p), -axis) > 1.0 - 1e-9 && std::abs(p.w - nearD) <= tol;
+            const double depth = p.w - glm::dot(axis, light.position);  // plane: axis . x = p.w
+            return glm::dot(glm::dvec3(p), -axis) > 1.0 - 1e-6 && depth <= 2.0 * spotF.nearPlane;
         });
         out.bodyBounds.extend(light.position);
     }

@@ -3,8 +3,9 @@
 // cases of the issue — fov 10..120 deg, near 1e-4..10, far/near up to 1e6, light directions
 // exactly parallel / antiparallel / perpendicular to the view, spot lights inside and outside the
 // view, scene bounds from zero thickness to 1e5 wide, world offsets up to 1e5 — checked per
-// method for NaN/Inf, for B's vertices landing in the clip cube, and for sampled points of V n S
-// lying inside B. Lives in the library so gtest and `shadowlab stress` share it.
+// method for NaN/Inf, for B's vertices landing in the clip cube, for sampled points of V n S
+// lying inside B, and for casterCanReach keeping sampled casters between those points and the
+// light. Lives in the library so gtest and `shadowlab stress` share it.
 #include "math/shadow_setup.h"
 
 #include <cstdint>
@@ -39,6 +40,9 @@ struct StressReport {
     std::uint64_t emptyB = 0;            // nothing visible is lit (valid == false, not a failure)
     std::uint64_t samplesOutsideB = 0;   // points of V n S (lit) not inside B: a failure
     std::uint64_t directionalEmptyB = 0; // V n S not empty but B empty for a sun: a failure
+    // A point between a visible lit point and the light (inside S) whose tiny box casterCanReach
+    // culls: a failure (culling must be conservative).
+    std::uint64_t cullingFailures = 0;
     std::string firstSampleFailure;
     std::vector<MethodStress> methods;
     double seconds = 0.0;
