@@ -125,11 +125,16 @@ void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int m
 }
 
 void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
-                         FrameStats& stats) const {
+                         FrameStats& stats, Surfaces surfaces) const {
     const Scene& scene = frame.scene;
     gpuScene_->bindVertexArray();
     glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
     gpuScene_->forEachRun(scene, mask, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
+        if (surfaces != Surfaces::All) {
+            const bool blended = prim.material >= 0 && prim.material < int(scene.materials.size()) &&
+                                 scene.materials[std::size_t(prim.material)].alphaMode == AlphaMode::Blend;
+            if (blended != (surfaces == Surfaces::Blended)) return;
+        }
         setMaterial(program, scene, prim.material, true);
         glFrontFace(mirrored ? GL_CW : GL_CCW);  // a negative-scale node flips the winding
         glDrawElementsInstancedBaseVertexBaseInstance(
@@ -327,28 +332,11 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     program.set("uOutputMode", frame.settings.viewMode == ViewMode::ShadowTermOnly ? 1 : 0);
 
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
-    const Scene& scene = frame.scene;
-    for (int blendPass = 0; blendPass < 2; ++blendPass) {
-        if (blendPass == 1) {
-            glEnable(GL_BLEND);
-            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-            glDepthMask(GL_FALSE);
-        }
-        gpuScene_->bindVertexArray();
-        gpuScene_->forEachRun(scene, frame.visible, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
-            const bool blended = prim.material >= 0 && prim.material < int(scene.materials.size()) &&
-                                 scene.materials[std::size_t(prim.material)].alphaMode == AlphaMode::Blend;
-            if (blended != (blendPass == 1)) return;
-            setMaterial(program, scene, prim.material, true);
-            glFrontFace(mirrored ? GL_CW : GL_CCW);
-            glDrawElementsInstancedBaseVertexBaseInstance(
-                GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
-                reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
-                prim.baseVertex, firstSlot);
-            ++stats.drawCalls;
-            stats.trianglesDrawn += std::size_t(prim.indexCount / 3) * std::size_t(count);
-        });
-    }
+    drawScene(program, frame, frame.visible, false, stats, Surfaces::OpaqueAndMasked);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    drawScene(program, frame, frame.visible, false, stats, Surfaces::Blended);
 
     // Restore what this pass changed.
     glDisable(GL_BLEND);

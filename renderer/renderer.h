@@ -52,8 +52,9 @@ private:
     void forwardPass(const Frame& frame, FrameStats& stats);
     void setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const;
     void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cullBackFaces) const;
+    enum class Surfaces { All, OpaqueAndMasked, Blended };
     void drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
-                   FrameStats& stats) const;
+                   FrameStats& stats, Surfaces surfaces = Surfaces::All) const;
 
     gl::Program forward_;
     gl::Program shadowDepth_;
