@@ -429,7 +429,7 @@ void runViewer(const ViewerOptions& options) {
                 const InsetRect r = toGl(layout.lightViewInset, fbHeight);
                 overlays->drawFrame(0, r);
                 if (haveMap && renderer->gpuScene()) {
-                    const glm::dmat4 m = positiveWOverBody(setup.worldToShadowClip, setup.diagnostics.bodyB);
+                    const glm::dmat4& m = setup.worldToShadowClip;  // w > 0 over B by contract
                     overlays->drawScene(0, r, *scene, *renderer->gpuScene(), m, light.direction,
                                         setup.reverseDepthTest);
                     const double marker = 0.02 * std::max(1e-3, glm::length(setup.bodyBounds.extent()));

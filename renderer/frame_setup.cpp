@@ -118,6 +118,9 @@ bool boxMayBeVisible(const ClipPlanes& c, const Aabb& box) {
 ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, const Aabb& sceneBounds) {
     ShadowParams p;
     p.method = settings.method;
+    // The polygon lists of B, V, S, P are for the wireframe overlays only; skip them otherwise.
+    const OverlaySettings& o = settings.overlays;
+    p.collectPolygons = o.observerInset || o.lightViewInset;
     p.lispsm.useBodyVector = settings.lispsm.useBodyVector;
     p.lispsm.overrideN = settings.lispsm.overrideN;
     p.lispsm.n = settings.lispsm.n;

@@ -74,13 +74,6 @@ void enterRect(GLuint framebuffer, const InsetRect& r) {
 
 }  // namespace
 
-glm::dmat4 positiveWOverBody(const glm::dmat4& m, const PolygonList& body) {
-    double wSum = 0.0;
-    for (const Polygon& face : body)
-        for (const glm::dvec3& p : face) wSum += (m * glm::dvec4(p, 1.0)).w;
-    return wSum < 0.0 ? -m : m;
-}
-
 std::unique_ptr<OverlayRenderer> OverlayRenderer::create(std::string& error) {
     std::unique_ptr<OverlayRenderer> r(new OverlayRenderer());
     auto lines = gl::Program::build("overlay_lines.vert", "overlay_lines.frag", "", error);

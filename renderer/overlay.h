@@ -55,8 +55,4 @@ private:
     gl::SamplerObject depthSampler_;
 };
 
-// Inverted PSM lights can come with a matrix whose w is negative over B; -M is the same
-// projective map with w > 0 (what GL clipping needs). Same rule as the renderer's shadow pass.
-glm::dmat4 positiveWOverBody(const glm::dmat4& worldToClip, const PolygonList& body);
-
 }  // namespace shadowlab
