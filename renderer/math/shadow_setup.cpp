@@ -241,12 +241,18 @@ LightSpaceExtent extentIn(const glm::dmat4& L, const std::vector<glm::dvec3>& pt
 // the warp k = 1/n so that k = 0 is exactly the uniform (SSM) map:
 //   z' = B_znear - z      (distance from P's near plane, >= 0 over B; we look along -z)
 //   w  = 1 + k z'         (the perspective divide of P; C sits n = 1/k behind the near plane)
-//   image x = (x - C_x) / w,   image y = z' / w,   depth source = y / w  (light rays are lines of
-//   constant x, z, so along a ray depth is affine in light-space y: the ray order is kept).
-glm::dmat4 lispsmPreFit(double zNear, double cx, double k) {
+//   image x = (x - C_x) / w,   image y = z' / w,   depth source = (y - y_ref) / w  (light rays are
+//   lines of constant x, z, so along a ray depth is affine in light-space y: the ray order is kept).
+// y_ref is B's lowest light-space y. Without it the depth of a point far from y = 0 is dominated by
+// y_ref / w, which varies across the map with w instead of along the rays: a spot light's
+// post-projective y, for one, sits within 1e-4 of -1 over all of B, so after fitting the depth
+// would be nearly -image y, its true variation along each ray a 1e-4 remainder that slope-scale
+// offsets and float depth swamp (all shadows lost). Measured from y_ref, depth along a ray spans
+// [0, (y_max - y_ref) / w] and keeps its resolution.
+glm::dmat4 lispsmPreFit(double zNear, double cx, double k, double yRef) {
     const glm::dvec4 X{1, 0, 0, 0}, Y{0, 1, 0, 0}, Z{0, 0, 1, 0}, W{0, 0, 0, 1};
     const glm::dvec4 zp = zNear * W - Z;
-    return fromRows(X - cx * W, zp, Y, W + k * zp);
+    return fromRows(X - cx * W, zp, Y - yRef * W, W + k * zp);
 }
 
 }  // namespace
@@ -680,7 +686,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
 
     // SSM in the same light frame (k = 0): the limit LiSPSM converges to (thesis 8.2.3).
     auto ssm = [&](const std::vector<glm::dvec3>& pts) {
-        return fitToPoints(lispsmPreFit(0.0, 0.0, 0.0) * ls.L, pts, true) ;
+        return fitToPoints(lispsmPreFit(0.0, 0.0, 0.0, 0.0) * ls.L, pts, true);
     };
 
     glm::dmat4 M{1.0};
@@ -753,7 +759,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
             diag.z1 = used.z1;
             // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
             const double zNearLs = e.z.hi;
-            M = fitToPoints(lispsmPreFit(zNearLs, els.x, k) * ls.L, bv, true);
+            M = fitToPoints(lispsmPreFit(zNearLs, els.x, k, e.y.lo) * ls.L, bv, true);
             if (k > 0.0) {
                 const glm::dvec4 ch = glm::inverse(ls.L) * glm::dvec4(els.x, els.y, zNearLs + 1.0 / k, 1.0);
                 if (std::abs(ch.w) > 0.0 && finite(glm::dvec3(ch) / ch.w)) {

@@ -605,3 +605,50 @@ TEST(Warp, SpotLispsmGivesNearReceiversMoreOfTheMapThanSsm) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// Depth must resolve the order ALONG each light ray, not mostly encode the position on the map:
+// found through the renderer (a LiSPSM spot light lost every shadow), because the spot's
+// post-projective y sits within 1e-4 of -1 over B and the fitted depth became ~ -image y.
+// For every method and both light kinds, two points on one light ray 10 % of B's depth apart
+// must differ in NDC depth by a sizeable fraction of the [-1, 1] range.
+TEST(ShadowSetup, DepthResolvesTheOrderAlongLightRays) {
+    const glm::dvec3 lightPos{5, 7, 3};
+    ShadowLight spot;
+    spot.kind = ShadowLightKind::Spot;
+    spot.position = lightPos;
+    spot.direction = glm::normalize(glm::dvec3(-1, 0, -1) - lightPos);
+    spot.outerConeAngle = glm::radians(40.0);
+    ShadowLight sun;
+    sun.direction = glm::normalize(glm::dvec3(1.0, -0.8, 0.1));
+    ViewFrustum v;
+    v.eye = {0, 9, 11};
+    v.forward = glm::normalize(glm::dvec3(0, -9, -11));
+    v.fovY = glm::radians(60.0);
+    v.aspect = 4.0 / 3.0;
+    v.zNear = 0.1;
+    v.zFar = 70.0;
+    const Aabb scene = box({-10, -0.1, -10}, {10, 2, 10});
+    for (const ShadowLight& light : {spot, sun})
+        for (ShadowMethod m : kAllMethods) {
+            ShadowParams p;
+            p.method = m;
+            const ShadowSetup s = computeShadowSetup(v, light, scene, p);
+            ASSERT_TRUE(s.valid);
+            // The box top's centre and the ground point it shadows, and a point 10 % further.
+            const glm::dvec3 top{0, 2, 0};
+            const glm::dvec3 dir = light.kind == ShadowLightKind::Spot ? glm::normalize(top - lightPos) : light.direction;
+            const glm::dvec3 ground = top + dir * (2.0 / -dir.y);
+            auto ndcZ = [&](glm::dvec3 q) {
+                const glm::dvec4 h = s.worldToShadowClip * glm::dvec4(q, 1.0);
+                return (s.reverseDepthTest ? -h.z : h.z) / h.w;
+            };
+            const double gap = ndcZ(ground) - ndcZ(top);
+            EXPECT_GT(gap, 0.02) << "method " << int(m) << (light.kind == ShadowLightKind::Spot ? " spot" : " sun");
+        }
+}
+
+}  // namespace
+}  // namespace shadowlab

@@ -104,6 +104,55 @@ INSTANTIATE_TEST_SUITE_P(
         return name;
     });
 
+// A spot light (thesis 9.2.3: L_r, eq. 8.13 for n): the box's shadow under the cone is dark for
+// every method; the ground truth casts rays towards the light's position.
+class SpotShadowRender : public RenderTest, public ::testing::WithParamInterface<ShadowMethod> {};
+
+TEST_P(SpotShadowRender, ShadowUnderTheConeIsDarkAndOpenGroundIsLit) {
+    const glm::dvec3 lightPos{5.0, 7.0, 3.0};
+    Scene scene = planeBoxScene();
+    Light& spot = scene.lights[0];
+    spot.type = LightType::Spot;
+    spot.position = lightPos;
+    spot.direction = glm::normalize(glm::dvec3(-1.0, 0.0, -1.0) - lightPos);
+    spot.outerConeAngle = float(glm::radians(40.0));
+    spot.innerConeAngle = float(glm::radians(30.0));
+    Settings s = shadowView(GetParam());
+    const RgbaImage image = render(scene, s);
+    int lit = 0, litButDark = 0, shadow = 0, shadowButLit = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            glm::dvec3 o, d;
+            pixelRay(s, kWidth, kHeight, x, y, o, d);
+            if (d.y >= -1e-6) continue;
+            const glm::dvec3 p = o + d * (-o.y / d.y);
+            if (std::abs(p.x) > kGroundHalf - 0.3 || std::abs(p.z) > kGroundHalf - 0.3) continue;
+            if (rayHitsBox(o, d, kBoxLo - 0.3, kBoxHi + 0.3, 0.0, -o.y / d.y)) continue;
+            const glm::dvec3 toLight = lightPos - p;
+            const double dist = glm::length(toLight);
+            // Well inside the cone only: outside it the spot does not light and nothing is tested.
+            if (glm::dot(-toLight / dist, glm::dvec3(spot.direction)) < std::cos(glm::radians(34.0))) continue;
+            const bool dark = luminance(image.at(x, y)) < 180.0;
+            if (!rayHitsBox(p, toLight / dist, kBoxLo - 0.25, kBoxHi + 0.25, 1e-6, dist)) {
+                ++lit;
+                litButDark += dark;
+            } else if (rayHitsBox(p, toLight / dist, kBoxLo + 0.25, kBoxHi - 0.25, 1e-6, dist)) {
+                ++shadow;
+                shadowButLit += !dark;
+            }
+        }
+    ASSERT_GT(shadow, 60);
+    ASSERT_GT(lit, 1000);
+    EXPECT_LT(shadowButLit, shadow * 2 / 100) << methodName(GetParam());
+    EXPECT_LT(litButDark, lit * 2 / 100) << methodName(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, SpotShadowRender,
+                         ::testing::Values(ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm),
+                         [](const ::testing::TestParamInfo<ShadowMethod>& info) {
+                             return std::string(methodName(info.param));
+                         });
+
 // Acne (thesis 3.3, ch. 5): with no offset a grazing light on the ground shadows part of the lit
 // ground; slope-scale offset (2.0 / 4.0) and back-face rendering each remove it.
 class Acne : public RenderTest {
