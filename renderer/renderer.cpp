@@ -28,7 +28,28 @@ struct Renderer::Frame {
     LinearShadowDepth linear;
     InstanceMask casters;
     InstanceMask visible;  // view-frustum culling of the shadow-term and forward passes
+    bool shadowMapMirrored = false;  // the warp flips the winding of light-facing triangles
 };
+
+bool Renderer::lightFacingIsCounterClockwise(const glm::dmat4& m, const LightFrame& light, const Aabb& body) {
+    if (body.empty()) return true;
+    const glm::dvec3 at = body.center();
+    glm::dvec3 travel = light.type == LightType::Directional ? light.direction : at - light.position;
+    if (!(glm::length(travel) > 0.0)) travel = light.direction;
+    travel = glm::normalize(travel);
+    // u x v = -travel: the triangle (at, at + u, at + v) faces the light, counter-clockwise seen from it.
+    const glm::dvec3 helper = std::abs(travel.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    const double size = 1e-3 * std::max(1e-9, glm::length(body.extent()));
+    const glm::dvec3 u = glm::normalize(glm::cross(travel, helper)) * size;
+    const glm::dvec3 v = glm::cross(-travel, u / size) * size;
+    auto ndc = [&](const glm::dvec3& p) {
+        const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+        return glm::dvec2(h) / h.w;
+    };
+    const glm::dvec2 a = ndc(at), b = ndc(at + u), c = ndc(at + v);
+    const double signedArea = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return !(signedArea < 0.0);
+}
 
 std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     std::unique_ptr<Renderer> r(new Renderer());
@@ -36,10 +57,13 @@ std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     if (!forward) return nullptr;
     auto depth = gl::Program::build("shadow_depth.vert", "shadow_depth.frag", "", error);
     if (!depth) return nullptr;
+    auto depthLinear = gl::Program::build("shadow_depth.vert", "shadow_depth.frag", "#define LINEAR_DEPTH 1\n", error);
+    if (!depthLinear) return nullptr;
     auto blur = gl::Program::build("fullscreen.vert", "blur.frag", "", error);
     if (!blur) return nullptr;
     r->forward_ = std::move(*forward);
     r->shadowDepth_ = std::move(*depth);
+    r->shadowDepthLinear_ = std::move(*depthLinear);
     r->blur_ = std::move(*blur);
     r->emptyVao_ = gl::createVertexArray();
     return r;
@@ -67,8 +91,14 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     if (!gpuScene_) return stats;
 
     if (settings.shadows && frame.light.castsShadow) {
-        frame.shadow = computeShadowSetup(view, shadowLight(frame.light), scene.bounds,
-                                          shadowParams(settings, view, scene.bounds));
+        ViewFrustum shadowView = view;
+        if (settings.method == ShadowMethod::Psm && settings.psm.autoNear) {
+            // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows.
+            const double nearest = nearestVisibleDepth(frame, stats);
+            if (nearest > view.zNear) shadowView.zNear = std::min(nearest, 0.5 * view.zFar);
+        }
+        frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds,
+                                          shadowParams(settings, shadowView, scene.bounds));
         stats.shadow = frame.shadow.diagnostics;
         lastSetup_ = frame.shadow;
         frame.shadowed = frame.shadow.valid;
@@ -79,6 +109,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // Linear depth grows away from the light whatever the warp, so it never needs reversing.
         frame.reversedDepth = frame.shadow.reverseDepthTest && !frame.linearDepth;
         frame.linear = frame.shadow.linearDepth;
+        frame.shadowMapMirrored =
+            !lightFacingIsCounterClockwise(frame.worldToShadowClip, frame.light, frame.shadow.bodyBounds);
         frame.casters.assign(scene.instances.size(), 0);
         for (std::size_t i = 0; i < scene.instances.size(); ++i) {
             const bool reaches = casterCanReach(frame.shadow, scene.instances[i].worldBounds);
@@ -125,7 +157,7 @@ void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int m
 }
 
 void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
-                         FrameStats& stats, Surfaces surfaces) const {
+                         FrameStats& stats, Surfaces surfaces, bool targetMirrored) const {
     const Scene& scene = frame.scene;
     gpuScene_->bindVertexArray();
     glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
@@ -136,7 +168,8 @@ void Renderer::drawScene(const gl::Program& program, const Frame& frame, const I
             if (blended != (surfaces == Surfaces::Blended)) return;
         }
         setMaterial(program, scene, prim.material, true);
-        glFrontFace(mirrored ? GL_CW : GL_CCW);  // a negative-scale node flips the winding
+        // A negative-scale node flips the winding, and so does a mirroring target projection.
+        glFrontFace(mirrored != targetMirrored ? GL_CW : GL_CCW);
         glDrawElementsInstancedBaseVertexBaseInstance(
             GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
             reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
@@ -147,6 +180,53 @@ void Renderer::drawScene(const gl::Program& program, const Frame& frame, const I
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
     glDisable(GL_CULL_FACE);
+}
+
+double Renderer::nearestVisibleDepth(const Frame& frame, FrameStats& stats) {
+    const auto cpuStart = Clock::now();
+    // A quarter-resolution depth pre-pass of what the camera sees; its smallest depth, halved as a
+    // margin for thin geometry that a coarse pixel may miss, is where nothing visible can be.
+    const int w = std::max(16, frame.viewport.width / 4), h = std::max(16, frame.viewport.height / 4);
+    if (w != nearWidth_ || h != nearHeight_) {
+        nearDepth_ = gl::createTexture(GL_TEXTURE_2D);
+        glTextureStorage2D(nearDepth_.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
+        nearFramebuffer_ = gl::createFramebuffer();
+        glNamedFramebufferTexture(nearFramebuffer_.id(), GL_DEPTH_ATTACHMENT, nearDepth_.id(), 0);
+        glNamedFramebufferDrawBuffer(nearFramebuffer_.id(), GL_NONE);
+        nearWidth_ = w;
+        nearHeight_ = h;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, nearFramebuffer_.id());
+    glViewport(0, 0, w, h);
+    const GLfloat farDepth = 1.0f;
+    glDepthMask(GL_TRUE);
+    glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    shadowDepth_.use();
+    shadowDepth_.set("uWorldToShadowClip", glm::mat4(frame.viewProjection));
+    FrameStats drawStats;
+    drawScene(shadowDepth_, frame, frame.visible, false, drawStats);
+    std::vector<float> depth(std::size_t(w) * h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, nearFramebuffer_.id());
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, 0);
+    glBindSampler(0, 0);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    stats.drawCalls += drawStats.drawCalls;
+    const float nearestDepth = *std::min_element(depth.begin(), depth.end());
+    stats.passes.push_back({"psm near pre-pass", msSince(cpuStart), 0.0});
+    if (!(nearestDepth < 1.0f)) return -1.0;  // nothing visible
+    // Window depth d in [0, 1] back to eye distance (GL perspective).
+    const double n = frame.view.zNear, f = frame.view.zFar;
+    const double ndcZ = 2.0 * double(nearestDepth) - 1.0;
+    const double eyeDistance = 2.0 * f * n / ((f + n) - ndcZ * (f - n));
+    return 0.5 * eyeDistance;
 }
 
 void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
@@ -165,24 +245,27 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     glDepthFunc(frame.reversedDepth ? GL_GREATER : GL_LESS);
     // Casters in front of the focused near plane still cast: clamp them onto it ("pancaking").
     glEnable(GL_DEPTH_CLAMP);
-    if (s.bias.mode == DepthOffset::SlopeScale) {
-        // Thesis eq. 5.2: bias = factor * dz + r * units, pushed away from the light.
+    if (s.bias.mode == DepthOffset::SlopeScale && !frame.linearDepth) {
+        // Thesis eq. 5.2: bias = factor * dz + r * units, pushed away from the light (the linear
+        // depth program applies it itself, since it writes gl_FragDepth).
         const float sign = frame.reversedDepth ? -1.0f : 1.0f;
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(sign * float(s.bias.slopeFactor), sign * float(s.bias.slopeUnits));
     }
 
-    const gl::Program& program = shadowDepth_;
+    const gl::Program& program = frame.linearDepth ? shadowDepthLinear_ : shadowDepth_;
     program.use();
     program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
-    program.set("uLinearDepth", frame.linearDepth ? 1 : 0);
+    const bool slope = s.bias.mode == DepthOffset::SlopeScale;
+    program.set("uSlopeFactor", slope ? float(s.bias.slopeFactor) : 0.0f);
+    program.set("uSlopeUnits", slope ? float(s.bias.slopeUnits) : 0.0f);
     program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
     program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
     program.set("uLinearAxis", glm::vec3(frame.linear.axis));
     program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
     FrameStats drawStats;
     // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
-    drawScene(program, frame, frame.casters, s.bias.backFaces, drawStats);
+    drawScene(program, frame, frame.casters, s.bias.backFaces, drawStats, Surfaces::All, frame.shadowMapMirrored);
     stats.drawCalls += drawStats.drawCalls;
 
     glDisable(GL_POLYGON_OFFSET_FILL);

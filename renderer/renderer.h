@@ -35,6 +35,12 @@ public:
     // Draws one view of `scene` with `settings` into `viewport`. `seconds` drives the animated sun.
     FrameStats render(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport);
 
+    // Does a triangle facing the light come out counter-clockwise in the shadow map? Warps may
+    // mirror the map (PSM's post-perspective space, reflected fits), which swaps what GL culls as
+    // front and back; back-face rendering (thesis 5.1) must cull the faces that face the light.
+    static bool lightFacingIsCounterClockwise(const glm::dmat4& worldToShadowClip, const LightFrame& light,
+                                              const Aabb& body);
+
     // Waits for the GPU timings of the frames in flight (headless renders report real GPU ms).
     void resolveTimings();
 
@@ -46,6 +52,7 @@ public:
 private:
     Renderer() = default;
     struct Frame;
+    double nearestVisibleDepth(const Frame& frame, FrameStats& stats);
     void shadowPass(const Frame& frame, FrameStats& stats);
     void shadowTermPass(const Frame& frame, FrameStats& stats);
     void blurPasses(const Frame& frame, FrameStats& stats);
@@ -54,15 +61,19 @@ private:
     void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cullBackFaces) const;
     enum class Surfaces { All, OpaqueAndMasked, Blended };
     void drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
-                   FrameStats& stats, Surfaces surfaces = Surfaces::All) const;
+                   FrameStats& stats, Surfaces surfaces = Surfaces::All, bool targetMirrored = false) const;
 
     gl::Program forward_;
-    gl::Program shadowDepth_;
+    gl::Program shadowDepth_;        // hyperbolic depth (the warp's own)
+    gl::Program shadowDepthLinear_;  // linear light-space depth written per fragment
     gl::Program blur_;
     gl::VertexArray emptyVao_;  // fullscreen triangles read no attributes
     std::unique_ptr<GpuScene> gpuScene_;
     ShadowMap shadowMap_;
     ShadowTermTargets termTargets_;
+    gl::Texture nearDepth_;  // PSM auto near: a small depth-only view of the scene
+    gl::Framebuffer nearFramebuffer_;
+    int nearWidth_ = 0, nearHeight_ = 0;
     ShadowSetup lastSetup_{};
     GpuTimer shadowTimer_, termTimer_, blurTimer_, forwardTimer_;
 };

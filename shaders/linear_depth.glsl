@@ -6,7 +6,11 @@ uniform vec3 uLinearOrigin;   // a point on the depth-0 side (directional) or th
 uniform vec3 uLinearAxis;     // the light's travel direction (directional)
 uniform vec2 uLinearRange;    // near, far
 
+// Not clamped: a vertex of a large polygon may lie outside [near, far] while the part of the
+// polygon inside B does not. Clamping per vertex would bend the interpolated depth across the
+// whole polygon (a ground quad would shadow itself over a wide wedge); the shadow pass clamps per
+// fragment instead (GL_DEPTH_CLAMP) and the lookup clamps its reference the same way.
 float linearDepth(vec3 p) {
     float t = uLinearRadial ? distance(p, uLinearOrigin) : dot(p - uLinearOrigin, uLinearAxis);
-    return clamp((t - uLinearRange.x) / (uLinearRange.y - uLinearRange.x), 0.0, 1.0);
+    return (t - uLinearRange.x) / (uLinearRange.y - uLinearRange.x);
 }

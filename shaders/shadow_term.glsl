@@ -24,7 +24,7 @@ float shadowTerm(vec3 p, vec3 n) {
     vec3 ndc = clip.xyz / clip.w;
     // Outside the focused light frustum there is no visible receiver (B holds them all).
     if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0;
-    float reference = uLinearDepth ? linearDepth(p) : ndc.z * 0.5 + 0.5;
+    float reference = uLinearDepth ? clamp(linearDepth(p), 0.0, 1.0) : ndc.z * 0.5 + 0.5;
     reference += uReverseDepth ? uConstantOffset : -uConstantOffset;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (uShadowFilter <= 1) return texture(uShadowMap, vec3(uv, reference));

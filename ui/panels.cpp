@@ -179,6 +179,10 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtual
 }
 
 bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
+    bool changed = checkbox("auto near plane", s.psm.autoNear,
+                            "Push the view's near plane to the nearest visible depth (a depth pre-pass) for the "
+                            "PSM warp, as Stamminger & Drettakis 4.2 / 6 do by reading back the depth buffer: "
+                            "post-perspective space degenerates with a tiny near plane.");
     if (s.method != ShadowMethod::Psm) ImGui::TextDisabled("(read-outs of the PSM method)");
     readout("move-back", formatNumber(d.psmMoveBack),
             "How far the virtual camera is moved back along -view so every shadow caster is in front of it "
@@ -192,7 +196,7 @@ bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
             "viewer becomes a point light, one from behind an inverted point light (rays converge; the depth test is "
             "reversed), one parallel to the view plane stays directional (Stamminger & Drettakis 3.1, 3.2; thesis "
             "7.2.3).");
-    return false;
+    return changed;
 }
 
 bool drawBiasPanel(Settings& s) {

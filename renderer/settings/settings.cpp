@@ -42,13 +42,14 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg
                                    spotOuterConeDeg, spotRange, color, intensity, ambient, animateSun,
                                    sunDegreesPerSecond)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, blurStrength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OverlaySettings, shadowMapInset, lightViewInset, observerInset, drawB, drawV,
                                    drawS, drawP)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, bias,
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
                                    filter, overlays, compare, animation)
 
 namespace {

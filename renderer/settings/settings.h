@@ -55,6 +55,14 @@ struct LispsmSettings {
     bool operator==(const LispsmSettings&) const = default;
 };
 
+struct PsmSettings {
+    // Stamminger & Drettakis 4.2, 6: "the near plane of the view as far as possible", found from
+    // the nearest visible depth (they read back the depth buffer). PSM spends its map on
+    // post-perspective space, which a near plane of 0.01 squeezes into a sliver.
+    bool autoNear = true;
+    bool operator==(const PsmSettings&) const = default;
+};
+
 struct BiasSettings {
     DepthDistribution distribution = DepthDistribution::Hyperbolic;
     DepthOffset mode = DepthOffset::SlopeScale;
@@ -105,6 +113,7 @@ struct Settings {
     CameraSettings camera;
     LightSettings light;
     LispsmSettings lispsm;
+    PsmSettings psm;
     BiasSettings bias;
     FilterSettings filter;
     OverlaySettings overlays;

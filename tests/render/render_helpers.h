@@ -70,7 +70,10 @@ public:
 protected:
     RgbaImage render(const Scene& scene, const Settings& settings, FrameStats* stats = nullptr) {
         std::string error;
-        if (!renderer_) renderer_ = Renderer::create(error);
+        if (!renderer_) {
+            renderer_ = Renderer::create(error);
+            scene_ = nullptr;  // a new renderer has no scene uploaded yet
+        }
         EXPECT_TRUE(renderer_) << error;
         if (!renderer_) return {};
         if (scene_ != &scene) {
