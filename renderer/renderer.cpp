@@ -124,7 +124,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         frame.visible[i] = boxMayBeVisible(planes, scene.instances[i].worldBounds) ? 1 : 0;
         stats.instancesVisible += frame.visible[i];
     }
-    stats.passes.push_back({"setup + culling (CPU)", msSince(setupStart), 0.0});
+    double prePassMs = 0.0;  // the PSM near pre-pass reports itself
+    for (const PassStats& p : stats.passes) prePassMs += p.cpuMs;
+    stats.passes.push_back({"setup + culling (CPU)", msSince(setupStart) - prePassMs, 0.0});
 
     if (frame.shadowed) shadowPass(frame, stats);
     const bool blur = frame.shadowed && settings.filter.blurIterations > 0;
