@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <initializer_list>
 #include <cmath>
 
 namespace shadowlab {
@@ -10,6 +11,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// The bindings every pass leaves behind as it found them: no texture or sampler on the units it
+// used, no vertex array, program or framebuffer.
+void unbindPassResources(std::initializer_list<GLuint> textureUnits) {
+    for (GLuint unit : textureUnits) {
+        glBindTextureUnit(unit, 0);
+        glBindSampler(unit, 0);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
 }  // namespace
 
@@ -215,11 +228,7 @@ double Renderer::nearestVisibleDepth(const Frame& frame, FrameStats& stats) {
     glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(0, 0);
-    glBindSampler(0, 0);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    unbindPassResources({0});
     stats.drawCalls += drawStats.drawCalls;
     const float nearestDepth = *std::min_element(depth.begin(), depth.end());
     stats.passes.push_back({"psm near pre-pass", msSince(cpuStart), 0.0});
@@ -275,11 +284,7 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     glDisable(GL_DEPTH_CLAMP);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(0, 0);
-    glBindSampler(0, 0);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    unbindPassResources({0});
     shadowTimer_.end();
     stats.passes.push_back({"shadow map", msSince(cpuStart), shadowTimer_.lastMs()});
 }
@@ -339,13 +344,7 @@ void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
     program.set("uOutputMode", 2);
     drawScene(program, frame, frame.visible, false, stats);
     glDisable(GL_DEPTH_TEST);
-    glBindTextureUnit(0, 0);
-    glBindSampler(0, 0);
-    glBindTextureUnit(1, 0);
-    glBindSampler(1, 0);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    unbindPassResources({0, 1});
     termTimer_.end();
     stats.passes.push_back({"shadow term", msSince(cpuStart), termTimer_.lastMs()});
 }
@@ -377,13 +376,7 @@ void Renderer::blurPasses(const Frame& frame, FrameStats& stats) {
             ++stats.drawCalls;
         }
     }
-    glBindTextureUnit(0, 0);
-    glBindSampler(0, 0);
-    glBindTextureUnit(1, 0);
-    glBindSampler(1, 0);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    unbindPassResources({0, 1});
     blurTimer_.end();
     stats.passes.push_back({"blur x" + std::to_string(s.filter.blurIterations), msSince(cpuStart), blurTimer_.lastMs()});
 }
@@ -431,12 +424,7 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glDisable(GL_SCISSOR_TEST);
-    for (GLuint unit : {0u, 1u, 2u}) {
-        glBindTextureUnit(unit, 0);
-        glBindSampler(unit, 0);
-    }
-    glBindVertexArray(0);
-    glUseProgram(0);
+    unbindPassResources({0, 1, 2});
     forwardTimer_.end();
     stats.passes.push_back({"forward", msSince(cpuStart), forwardTimer_.lastMs()});
 }
