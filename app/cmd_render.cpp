@@ -3,12 +3,15 @@
 #include "gl/debug_output.h"
 #include "headless_context.h"
 #include "render_target.h"
+#include "aliasing_stats.h"
 #include "renderer.h"
 #include "scenes/animation.h"
 #include "view_setup.h"
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -21,12 +24,35 @@ struct RenderOptions {
     std::string out;
     int width = 1280;
     int height = 720;
+    bool measure = false;
     SettingsOverrides overrides;
 };
 
 [[noreturn]] void fail(const std::string& message, int code = 1) {
     std::cerr << "shadowlab render: " << message << "\n";
     throw CLI::RuntimeError(code);
+}
+
+// Error against cost for one method: the perspective aliasing error over the visible receivers
+// (thesis 8.2.1) and the CPU time of a whole frame including the GPU's work (glFinish).
+void measureMethod(Renderer& renderer, const Scene& scene, const Settings& settings, const RenderTarget& target,
+                   bool header) {
+    const Viewport viewport{target.framebuffer(), 0, 0, target.width(), target.height()};
+    using Clock = std::chrono::steady_clock;
+    constexpr int kFrames = 3;
+    const auto start = Clock::now();
+    for (int f = 0; f < kFrames; ++f) renderer.render(scene, settings, settings.animation.time, viewport);
+    glFinish();
+    const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count() / kFrames;
+    Settings raw = settings;
+    raw.viewMode = ViewMode::AliasingErrorRaw;
+    FrameStats stats = renderer.render(scene, raw, settings.animation.time, viewport);
+    const AliasingStats a = aliasingStats(target.readColor());
+    if (header)
+        std::cout << "method          frame ms   measured px   pixels/texel: median     p95     max   undersampled\n";
+    std::printf("%-14s %9.2f %13zu %22.3f %7.3f %7.2f %13.1f%%\n", methodName(settings.method), frameMs,
+                a.measuredPixels, a.median, a.p95, a.max, 100.0 * a.undersampledFraction);
+    (void)stats;
 }
 
 void runRender(const RenderOptions& options) {
@@ -66,6 +92,7 @@ void runRender(const RenderOptions& options) {
         RgbaImage part = target.readColor();
         if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
         image.blit(part, options.width * int(i), 0);
+        if (options.measure) measureMethod(*renderer, *scene, view, target, i == 0);
     }
     if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
     if (!writePng(image, options.out, error)) fail(error);
@@ -85,6 +112,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
     cmd->add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm, lispsm, or all (side by side)");
     cmd->add_option("--set", options->overrides.sets, "a setting as key=value, e.g. bias.mode=slope (repeatable)");
+    cmd->add_flag("--measure", options->measure,
+                  "print, per method, the frame time and the perspective aliasing error (screen pixels per "
+                  "shadow-map texel, thesis 8.2.1) over the visible receivers");
     cmd->callback([options] { runRender(*options); });
 }
 

@@ -391,8 +391,9 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     glScissor(vp.x, vp.y, vp.width, vp.height);
     glEnable(GL_FRAMEBUFFER_SRGB);
     // Background: a sky colour given in linear space (the sRGB framebuffer encodes it).
-    const GLfloat sky[4] = {0.30f, 0.45f, 0.70f, 1.0f};
-    glClearBufferfv(GL_COLOR, 0, sky);
+    // Raw measurement frames clear to zero: "nothing measured here".
+    const GLfloat sky[4] = {0.30f, 0.45f, 0.70f, 1.0f}, none[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, frame.settings.viewMode == ViewMode::AliasingErrorRaw ? none : sky);
     glDepthMask(GL_TRUE);
     const GLfloat farDepth = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
@@ -407,7 +408,13 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
         glBindTextureUnit(2, termTargets_.term(0));
         glBindSampler(2, 0);
     }
-    program.set("uOutputMode", frame.settings.viewMode == ViewMode::ShadowTermOnly ? 1 : 0);
+    const ViewMode mode = frame.settings.viewMode;
+    program.set("uOutputMode", mode == ViewMode::ShadowTermOnly     ? 1
+                               : mode == ViewMode::AliasingError    ? 3
+                               : mode == ViewMode::AliasingErrorRaw ? 4
+                                                                    : 0);
+    // Raw measurement values are written as they are, not sRGB-encoded.
+    if (mode == ViewMode::AliasingErrorRaw) glDisable(GL_FRAMEBUFFER_SRGB);
 
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
     drawScene(program, frame, frame.visible, false, stats, Surfaces::OpaqueAndMasked);

@@ -7,12 +7,14 @@ in vec3 vWorldNormal;
 in vec2 vTexcoord;
 
 // 0: lit; 1: the "shadow term only" view (thesis Fig. 6.5: unlit, unicoloured geometry);
-// 2: the raw shadow term, written for the eye-space blur (thesis 9.4.2).
+// 2: the raw shadow term, written for the eye-space blur (thesis 9.4.2);
+// 3: the perspective aliasing error, colour-coded; 4: the same as raw values for measurement.
 uniform int uOutputMode;
 
 out vec4 outColor;  // linear; the sRGB framebuffer encodes it
 
 #include "shadow_term.glsl"
+#include "aliasing_error.glsl"
 
 void main() {
     vec4 albedo = baseColor(vTexcoord);
@@ -22,6 +24,10 @@ void main() {
     float shadow = shadowTerm(vWorldPosition, n);
     if (uOutputMode == 2) {
         outColor = vec4(shadow, 0.0, 0.0, 1.0);
+        return;
+    }
+    if (uOutputMode >= 3) {
+        outColor = aliasingErrorOutput(vWorldPosition, uOutputMode == 4);
         return;
     }
     if (uOutputMode == 1) {

@@ -256,6 +256,14 @@ bool drawFilterPanel(Settings& s) {
         s.viewMode = termOnly ? ViewMode::ShadowTermOnly : ViewMode::Lit;
         changed = true;
     }
+    bool aliasing = s.viewMode == ViewMode::AliasingError;
+    if (checkbox("aliasing error view", aliasing,
+                 "Colour each pixel by the perspective aliasing error dp/ds of thesis 8.2.1 (eq. 8.1): screen "
+                 "pixels per shadow-map texel. Green = 1, red = undersampled (jagged edges, up to 16x), blue = "
+                 "oversampled. `shadowlab render --measure` prints its statistics per method.")) {
+        s.viewMode = aliasing ? ViewMode::AliasingError : ViewMode::Lit;
+        changed = true;
+    }
     return changed;
 }
 

@@ -32,7 +32,10 @@ NLOHMANN_JSON_SERIALIZE_ENUM(ShadowFilter, {{ShadowFilter::Nearest, "nearest"},
                                             {ShadowFilter::Pcf2x2Hardware, "pcf2x2"},
                                             {ShadowFilter::Pcf3x3, "pcf3x3"},
                                             {ShadowFilter::Pcf4x4, "pcf4x4"}})
-NLOHMANN_JSON_SERIALIZE_ENUM(ViewMode, {{ViewMode::Lit, "lit"}, {ViewMode::ShadowTermOnly, "shadow-term"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(ViewMode, {{ViewMode::Lit, "lit"},
+                                        {ViewMode::ShadowTermOnly, "shadow-term"},
+                                        {ViewMode::AliasingError, "aliasing"},
+                                        {ViewMode::AliasingErrorRaw, "aliasing-raw"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(LightSource, {{LightSource::Scene, "scene"},
                                            {LightSource::Sun, "sun"},
                                            {LightSource::Spot, "spot"}})

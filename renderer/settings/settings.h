@@ -16,7 +16,10 @@ namespace shadowlab {
 enum class DepthDistribution { Hyperbolic, Linear };
 enum class DepthOffset { None, Constant, SlopeScale };
 enum class ShadowFilter { Nearest, Pcf2x2Hardware, Pcf3x3, Pcf4x4 };
-enum class ViewMode { Lit, ShadowTermOnly };  // thesis Fig. 6.5: unlit, unicoloured geometry
+// Lit; the shadow term on unlit, unicoloured geometry (thesis Fig. 6.5); the perspective
+// aliasing error dp/ds of thesis eq. 8.1 per pixel, colour-coded (AliasingError) or as raw values
+// for measurement (AliasingErrorRaw: R = (log2 + 4) / 12, G = 1 where a receiver was measured).
+enum class ViewMode { Lit, ShadowTermOnly, AliasingError, AliasingErrorRaw };
 enum class LightSource { Scene, Sun, Spot };   // a glTF light, or a light set by azimuth/elevation
 
 struct CameraSettings {
