@@ -142,20 +142,16 @@ void buildChessboard(GltfBuilder& builder, const GenerateOptions&) {
     const int spot = builder.addSpotLight("Spot", {1.0, 0.95, 0.85}, 800.0, 40.0, 32.0 * kDegree, 40.0 * kDegree);
     builder.addLightNode("Spot", spot, spotPosition, glm::dvec3(0.0, kTop, 0.0) - spotPosition);
 
-    struct Preset {
-        const char* name;
-        glm::dvec3 eye;
-        glm::dvec3 target;
+    auto lookingAt = [](const char* name, glm::dvec3 eye, glm::dvec3 target) {
+        return CameraPreset{name, eye, target - eye};
     };
-    const Preset presets[] = {
-        {"Camera_Main", {1.0, 2.4, 7.0}, {0.0, 0.5, 0.0}},            // over white's shoulder, close
-        {"Camera_Low", {-5.5, 1.1, 1.5}, {2.0, 0.6, -1.0}},           // along the board from its side
-        {"Camera_FromLight", {-5.0, 7.5, 4.2}, {0.0, kTop, 0.0}},     // near the spot: little aliasing
-    };
-    for (const Preset& preset : presets) {
-        const int camera = builder.addPerspectiveCamera(preset.name, 60.0 * kDegree, 0.1, 50.0);
-        builder.addCameraNode(preset.name, camera, preset.eye, preset.target - preset.eye);
-    }
+    addCameraPresets(builder,
+                     {
+                         lookingAt("Camera_Main", {1.0, 2.4, 7.0}, {0.0, 0.5, 0.0}),         // over white's shoulder
+                         lookingAt("Camera_Low", {-5.5, 1.1, 1.5}, {2.0, 0.6, -1.0}),        // along the board
+                         lookingAt("Camera_FromLight", {-5.0, 7.5, 4.2}, {0.0, kTop, 0.0}),  // near the spot
+                     },
+                     0.1, 50.0);
 }
 
 }  // namespace shadowlab::scenegen

@@ -95,15 +95,8 @@ void buildForest(GltfBuilder& builder, const GenerateOptions& options) {
     auto eyeAt = [&](double x, double z, double height) {
         return glm::dvec3(x * reach, grid.surfaceHeight(x * reach, z * reach) + height, z * reach);
     };
-    auto pitched = [](glm::dvec3 horizontal, double pitchDeg) {
-        return glm::normalize(horizontal * std::cos(pitchDeg * kDegree) + glm::dvec3(0.0, std::sin(pitchDeg * kDegree), 0.0));
-    };
-    struct Preset {
-        const char* name;
-        glm::dvec3 eye;
-        glm::dvec3 direction;
-    };
-    const std::vector<Preset> presets = {
+    const auto pitched = pitchedDirection;
+    const std::vector<CameraPreset> presets = {
         // LiSPSM's best case: view perpendicular to the light, looking along the ground (thesis 8.2.4).
         {"Camera_AlongGround_SunSide", eyeAt(0.0, 0.0, 1.8), pitched(sideways, -3.0)},
         // PSM's hard case: the sun behind the viewer (light source behind the eye, thesis 7.2.2).
@@ -130,7 +123,7 @@ void buildForest(GltfBuilder& builder, const GenerateOptions& options) {
         const double size = placeRandom.uniform(0.8, 1.25);
         const std::uint32_t pick = placeRandom.below(1000);
         bool clear = spacing.allNear(p, [&](glm::dvec2 q, double) { return glm::distance(p, q) >= 2.0; });
-        for (const Preset& preset : presets)
+        for (const CameraPreset& preset : presets)
             if (preset.eye.y - grid.surfaceHeight(preset.eye.x, preset.eye.z) < 5.0 &&
                 glm::distance(p, glm::dvec2(preset.eye.x, preset.eye.z)) < 3.5)
                 clear = false;
@@ -152,10 +145,7 @@ void buildForest(GltfBuilder& builder, const GenerateOptions& options) {
 
     const int sun = builder.addDirectionalLight("Sun", {1.0, 0.96, 0.88}, 3.0);
     builder.addLightNode("Sun", sun, glm::dvec3(0.0, 100.0, 0.0) - 100.0 * sunDirection, sunDirection);
-    for (const Preset& preset : presets) {
-        const int camera = builder.addPerspectiveCamera(preset.name, 60.0 * kDegree, 0.1, 70.0);
-        builder.addCameraNode(preset.name, camera, preset.eye, preset.direction);
-    }
+    addCameraPresets(builder, presets, 0.1, 70.0);
 }
 
 }  // namespace shadowlab::scenegen

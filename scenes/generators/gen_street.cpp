@@ -133,23 +133,13 @@ void buildStreet(GltfBuilder& builder, const GenerateOptions& options) {
     builder.addLightNode("Sun", sun, glm::dvec3(0.0, 200.0, 0.0) - 200.0 * sunDirection, sunDirection);
 
     const double far = length + 100.0;  // the whole street in view: a depth range of > 20,000 : 1
-    auto pitched = [](glm::dvec3 horizontal, double pitchDeg) {
-        return glm::normalize(horizontal * std::cos(pitchDeg * kDegree) + glm::dvec3(0.0, std::sin(pitchDeg * kDegree), 0.0));
-    };
-    struct Preset {
-        const char* name;
-        glm::dvec3 eye;
-        glm::dvec3 direction;
-    };
-    const Preset presets[] = {
+    const auto pitched = pitchedDirection;
+    const std::vector<CameraPreset> presets = {
         {"Camera_DownStreet_SunBehind", {-2.0, 1.7, halfLength - 5.0}, pitched({0.0, 0.0, -1.0}, -1.0)},
         {"Camera_DownStreet_SunAhead", {2.0, 1.7, -halfLength + 5.0}, pitched({0.0, 0.0, 1.0}, -1.0)},
         {"Camera_Rooftop", {0.0, 40.0, halfLength - std::min(40.0, 0.2 * length)}, pitched({0.0, 0.0, -1.0}, -12.0)},
     };
-    for (const Preset& preset : presets) {
-        const int camera = builder.addPerspectiveCamera(preset.name, 60.0 * kDegree, 0.1, far);
-        builder.addCameraNode(preset.name, camera, preset.eye, preset.direction);
-    }
+    addCameraPresets(builder, presets, 0.1, far);
 }
 
 }  // namespace shadowlab::scenegen

@@ -41,6 +41,17 @@ glm::dvec3 sunTravelDirection(double elevation, double azimuth) {
                                      std::cos(elevation) * std::sin(azimuth)));
 }
 
+glm::dvec3 pitchedDirection(const glm::dvec3& horizontal, double pitchDeg) {
+    return glm::normalize(horizontal * std::cos(pitchDeg * kDegree) + glm::dvec3(0.0, std::sin(pitchDeg * kDegree), 0.0));
+}
+
+void addCameraPresets(GltfBuilder& builder, const std::vector<CameraPreset>& presets, double znear, double zfar) {
+    for (const CameraPreset& preset : presets) {
+        const int camera = builder.addPerspectiveCamera(preset.name, 60.0 * kDegree, znear, zfar);
+        builder.addCameraNode(preset.name, camera, preset.eye, preset.direction);
+    }
+}
+
 namespace {
 
 using BuildFunction = void (*)(GltfBuilder&, const GenerateOptions&);

@@ -77,4 +77,16 @@ std::string padded(std::size_t value, int digits);
 // moves horizontally towards `azimuth` (radians, 0 = +X, pi/2 = +Z).
 glm::dvec3 sunTravelDirection(double elevation, double azimuth);
 
+// A horizontal direction tilted up by `pitchDeg` degrees (negative looks down).
+glm::dvec3 pitchedDirection(const glm::dvec3& horizontal, double pitchDeg);
+
+// A named camera placed at `eye` looking along `direction`.
+struct CameraPreset {
+    const char* name;
+    glm::dvec3 eye;
+    glm::dvec3 direction;
+};
+// Adds every preset as a perspective camera (vertical fov 60 degrees, as the thesis uses) and its node.
+void addCameraPresets(GltfBuilder& builder, const std::vector<CameraPreset>& presets, double znear, double zfar);
+
 }  // namespace shadowlab::scenegen
