@@ -322,12 +322,9 @@ void runViewer(const ViewerOptions& options) {
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
         if (state.showUi) {
-            // The z_f the auto mode picks (thesis 9.2.5), for the LiSPSM panel's slider.
-            const double aspect = fbHeight > 0 ? double(fbWidth - ui::controlWindowWidth()) /
-                                                     double(fbHeight * int(ui::shownMethods(settings).size()))
-                                               : 1.0;
-            const double autoFar =
-                shadowParams(settings, viewFrustum(settings.camera, aspect), scene->bounds).lispsm.virtualFar;
+            // The z_f the auto mode picked last frame (thesis 9.2.5: the farthest visible depth from
+            // the renderer's depth pre-pass), for the LiSPSM panel's slider.
+            const double autoFar = stats.virtualFarUsed;
             ui::ControlContext ctx{&stats, &*scene, state.animation, autoFar, &state.observer, &state.viewState};
             const ui::ControlResult controls = ui::drawControlWindow(settings, ctx, float(fbWidth), float(fbHeight));
             if (controls.changed) sanitize(settings);

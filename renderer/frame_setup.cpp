@@ -125,8 +125,9 @@ ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, con
     p.lispsm.overrideN = settings.lispsm.overrideN;
     p.lispsm.n = settings.lispsm.n;
     if (settings.lispsm.autoVirtualFar) {
-        // Thesis 9.2.5: z_f = the farthest visible depth. The farthest scene point in front of
-        // the camera bounds it (cheap and conservative; a depth read-back would be exact).
+        // Thesis 9.2.5: z_f = the farthest visible depth. The renderer measures it with a depth
+        // pre-pass and replaces this; without one, the farthest scene point in front of the
+        // camera bounds it.
         double farthest = 0.0;
         for (int i = 0; i < 8 && !sceneBounds.empty(); ++i)
             farthest = std::max(farthest, glm::dot(sceneBounds.corner(i) - view.eye, view.forward));

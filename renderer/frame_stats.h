@@ -23,6 +23,7 @@ struct FrameStats {
     std::size_t castersDrawn = 0;
     std::size_t castersCulled = 0;
     int shadowMapSize = 0;
+    double virtualFarUsed = 0.0;  // LiSPSM: the z_f n was computed for (auto: the farthest visible depth)
     std::string lightNote;  // e.g. a point light, lit without shadows
     ShadowDiagnostics shadow;  // B, V, S, P, n, gamma ... of this frame (empty when unshadowed)
 };

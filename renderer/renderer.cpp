@@ -104,14 +104,20 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     if (!gpuScene_) return stats;
 
     if (settings.shadows && frame.light.castsShadow) {
+        const bool psmAutoNear = settings.method == ShadowMethod::Psm && settings.psm.autoNear;
+        const bool lispsmAutoFar = settings.method == ShadowMethod::Lispsm && settings.lispsm.autoVirtualFar;
+        const VisibleDepth visible = psmAutoNear || lispsmAutoFar ? visibleDepthRange(frame, stats) : VisibleDepth{};
         ViewFrustum shadowView = view;
-        if (settings.method == ShadowMethod::Psm && settings.psm.autoNear) {
-            // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows.
-            const double nearest = nearestVisibleDepth(frame, stats);
-            if (nearest > view.zNear) shadowView.zNear = std::min(nearest, 0.5 * view.zFar);
-        }
-        frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds,
-                                          shadowParams(settings, shadowView, scene.bounds));
+        // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows
+        // (halved: a quarter-resolution pixel may miss thin geometry in front).
+        if (psmAutoNear && 0.5 * visible.nearest > view.zNear)
+            shadowView.zNear = std::min(0.5 * visible.nearest, 0.5 * view.zFar);
+        ShadowParams params = shadowParams(settings, shadowView, scene.bounds);
+        // Thesis 9.2.5: with a depth-only pass, z_f is the farthest visible depth.
+        if (lispsmAutoFar && visible.farthest > 0.0)
+            params.lispsm.virtualFar = std::clamp(visible.farthest, view.zNear * 1.001, view.zFar);
+        stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
+        frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds, params);
         stats.shadow = frame.shadow.diagnostics;
         lastSetup_ = frame.shadow;
         frame.shadowed = frame.shadow.valid;
@@ -197,10 +203,10 @@ void Renderer::drawScene(const gl::Program& program, const Frame& frame, const I
     glDisable(GL_CULL_FACE);
 }
 
-double Renderer::nearestVisibleDepth(const Frame& frame, FrameStats& stats) {
+Renderer::VisibleDepth Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
     const auto cpuStart = Clock::now();
-    // A quarter-resolution depth pre-pass of what the camera sees; its smallest depth, halved as a
-    // margin for thin geometry that a coarse pixel may miss, is where nothing visible can be.
+    // A quarter-resolution depth pre-pass of what the camera sees (thesis 9.2.5 "depth-only pass";
+    // Stamminger & Drettakis read back the depth buffer the same way).
     const int w = std::max(16, frame.viewport.width / 4), h = std::max(16, frame.viewport.height / 4);
     if (w != nearWidth_ || h != nearHeight_) {
         nearDepth_ = gl::createTexture(GL_TEXTURE_2D);
@@ -230,14 +236,21 @@ double Renderer::nearestVisibleDepth(const Frame& frame, FrameStats& stats) {
     glDisable(GL_DEPTH_TEST);
     unbindPassResources({0});
     stats.drawCalls += drawStats.drawCalls;
-    const float nearestDepth = *std::min_element(depth.begin(), depth.end());
-    stats.passes.push_back({"psm near pre-pass", msSince(cpuStart), 0.0});
-    if (!(nearestDepth < 1.0f)) return -1.0;  // nothing visible
+    float nearestDepth = 1.0f, farthestDepth = 0.0f;
+    for (float d : depth) {
+        if (!(d < 1.0f)) continue;  // background
+        nearestDepth = std::min(nearestDepth, d);
+        farthestDepth = std::max(farthestDepth, d);
+    }
+    stats.passes.push_back({"visible depth pre-pass", msSince(cpuStart), 0.0});
+    if (!(nearestDepth < 1.0f)) return {};  // nothing visible
     // Window depth d in [0, 1] back to eye distance (GL perspective).
     const double n = frame.view.zNear, f = frame.view.zFar;
-    const double ndcZ = 2.0 * double(nearestDepth) - 1.0;
-    const double eyeDistance = 2.0 * f * n / ((f + n) - ndcZ * (f - n));
-    return 0.5 * eyeDistance;
+    auto eyeDistance = [&](float d) {
+        const double ndcZ = 2.0 * double(d) - 1.0;
+        return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
+    };
+    return {eyeDistance(nearestDepth), eyeDistance(farthestDepth)};
 }
 
 void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {

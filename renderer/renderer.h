@@ -52,7 +52,12 @@ public:
 private:
     Renderer() = default;
     struct Frame;
-    double nearestVisibleDepth(const Frame& frame, FrameStats& stats);
+    // Eye distances of the nearest and farthest visible geometry, from a quarter-resolution depth
+    // pre-pass (nearest < 0 when nothing is visible).
+    struct VisibleDepth {
+        double nearest = -1.0, farthest = -1.0;
+    };
+    VisibleDepth visibleDepthRange(const Frame& frame, FrameStats& stats);
     void shadowPass(const Frame& frame, FrameStats& stats);
     void shadowTermPass(const Frame& frame, FrameStats& stats);
     void blurPasses(const Frame& frame, FrameStats& stats);
@@ -71,7 +76,7 @@ private:
     std::unique_ptr<GpuScene> gpuScene_;
     ShadowMap shadowMap_;
     ShadowTermTargets termTargets_;
-    gl::Texture nearDepth_;  // PSM auto near: a small depth-only view of the scene
+    gl::Texture nearDepth_;  // PSM auto near / LiSPSM auto z_f: a small depth-only view of the scene
     gl::Framebuffer nearFramebuffer_;
     int nearWidth_ = 0, nearHeight_ = 0;
     ShadowSetup lastSetup_{};
