@@ -5,6 +5,16 @@
 namespace shadowlab::gl {
 namespace {
 
+// The info log of a shader or program (glGetShaderiv/InfoLog or glGetProgramiv/InfoLog).
+template <class GetParameter, class GetInfoLog>
+std::string infoLog(GLuint id, GetParameter getParameter, GetInfoLog getInfoLog) {
+    GLint length = 0;
+    getParameter(id, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+    getInfoLog(id, length, nullptr, log.data());
+    return log;
+}
+
 ShaderHandle compile(GLenum stage, std::string_view file, std::string_view defines, std::string& error) {
     std::string source = shaders::expandedSource(file, defines, error);
     if (source.empty()) return {};
@@ -15,11 +25,8 @@ ShaderHandle compile(GLenum stage, std::string_view file, std::string_view defin
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        GLint length = 0;
-        glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-        glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-        error = "compiling shader '" + std::string(file) + "' failed:\n" + log;
+        error = "compiling shader '" + std::string(file) + "' failed:\n" +
+                infoLog(shader.id(), glGetShaderiv, glGetShaderInfoLog);
         return {};
     }
     return shader;
@@ -43,11 +50,8 @@ std::optional<Program> Program::build(std::string_view vertexFile, std::string_v
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
     if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-        error = "linking '" + std::string(vertexFile) + "' + '" + std::string(fragmentFile) + "' failed:\n" + log;
+        error = "linking '" + std::string(vertexFile) + "' + '" + std::string(fragmentFile) + "' failed:\n" +
+                infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog);
         return std::nullopt;
     }
     return program;
