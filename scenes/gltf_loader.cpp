@@ -669,7 +669,8 @@ struct Converter {
         p.normals.resize(vertexCount);
         if (!normals.empty()) {
             for (std::size_t i = 0; i < vertexCount; ++i) {
-                const glm::vec3 n(float(normals[3 * i]), float(normals[3 * i + 1]), float(normals[3 * i + 2]));
+                // Braces, not parentheses: `vec3 n(float(a[i]), ...)` is a function declaration to clang 14.
+                const glm::vec3 n{float(normals[3 * i]), float(normals[3 * i + 1]), float(normals[3 * i + 2])};
                 const float length = glm::length(n);
                 p.normals[i] = length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
             }
