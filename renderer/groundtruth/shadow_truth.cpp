@@ -1,0 +1,38 @@
+#include "groundtruth/shadow_truth.h"
+
+namespace shadowlab {
+
+ShadowComparison compareWithTruth(const ShadowStateFrame& f) {
+    ShadowComparison c;
+    const std::size_t n = f.width > 0 && f.height > 0 ? std::size_t(f.width) * std::size_t(f.height) : 0;
+    if (n == 0 || f.receiver.size() != n || f.shadowTerm.size() != n || f.truthLit.size() != n) return c;
+    c.verdicts.assign(n, PixelVerdict::NotMeasured);
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            const std::size_t i = std::size_t(y) * f.width + x;
+            if (!f.receiver[i]) continue;
+            ++c.receivers;
+            const bool renderedLit = f.shadowTerm[i] >= kLitThreshold;
+            const bool truthLit = f.truthLit[i] != 0;
+            PixelVerdict v = PixelVerdict::Agree;
+            if (renderedLit != truthLit) v = truthLit ? PixelVerdict::FalseShadow : PixelVerdict::FalseLight;
+            c.verdicts[i] = v;
+            c.falseShadow += v == PixelVerdict::FalseShadow;
+            c.falseLight += v == PixelVerdict::FalseLight;
+            auto differs = [&](int nx, int ny) {
+                if (nx < 0 || ny < 0 || nx >= f.width || ny >= f.height) return false;
+                const std::size_t j = std::size_t(ny) * f.width + nx;
+                return f.receiver[j] && (f.truthLit[j] != 0) != truthLit;
+            };
+            if (differs(x - 1, y) || differs(x + 1, y) || differs(x, y - 1) || differs(x, y + 1)) ++c.truthBoundary;
+        }
+    if (c.receivers == 0) return c;
+    const double mismatches = double(c.falseShadow + c.falseLight);
+    c.eTotal = mismatches / double(c.receivers);
+    c.falseShadowShare = double(c.falseShadow) / double(c.receivers);
+    c.falseLightShare = double(c.falseLight) / double(c.receivers);
+    c.eEdge = c.truthBoundary > 0 ? mismatches / double(c.truthBoundary) : 0.0;
+    return c;
+}
+
+}  // namespace shadowlab
