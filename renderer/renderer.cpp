@@ -1,4 +1,5 @@
 #include "renderer.h"
+#include "renderer_frame.h"
 
 #include <algorithm>
 #include <chrono>
@@ -25,24 +26,6 @@ void unbindPassResources(std::initializer_list<GLuint> textureUnits) {
 }
 
 }  // namespace
-
-struct Renderer::Frame {
-    const Scene& scene;
-    const Settings& settings;
-    Viewport viewport;
-    ViewFrustum view;
-    glm::dmat4 viewProjection;
-    LightFrame light;
-    bool shadowed = false;  // a shadow map is rendered and looked up this frame
-    ShadowSetup shadow;
-    glm::dmat4 worldToShadowClip{1.0};
-    bool linearDepth = false;
-    bool reversedDepth = false;
-    LinearShadowDepth linear;
-    InstanceMask casters;
-    InstanceMask visible;  // view-frustum culling of the shadow-term and forward passes
-    bool shadowMapMirrored = false;  // the warp flips the winding of light-facing triangles
-};
 
 bool Renderer::lightFacingIsCounterClockwise(const glm::dmat4& m, const LightFrame& light, const Aabb& body) {
     if (body.empty()) return true;
@@ -156,6 +139,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         termTargets_.release();  // N = 0 keeps nothing extra allocated
     }
     forwardPass(frame, stats);
+    if (measureRequest_.targets) measurePass(frame, stats);
     return stats;
 }
 

@@ -10,6 +10,7 @@
 #include "gl/program.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
+#include "measure_pass.h"
 #include "shadow_resources.h"
 
 #include <memory>
@@ -41,6 +42,11 @@ public:
     static bool lightFacingIsCounterClockwise(const glm::dmat4& worldToShadowClip, const LightFrame& light,
                                               const Aabb& body);
 
+    // render() into `viewport`, then the measurement pass of the same frame (renderer_measure.cpp):
+    // the float values of the accuracy instruments, read back into `out`.
+    FrameStats renderMeasured(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport,
+                              MeasureFrame& out);
+
     // Waits for the GPU timings of the frames in flight (headless renders report real GPU ms).
     void resolveTimings();
 
@@ -62,6 +68,7 @@ private:
     void shadowTermPass(const Frame& frame, FrameStats& stats);
     void blurPasses(const Frame& frame, FrameStats& stats);
     void forwardPass(const Frame& frame, FrameStats& stats);
+    void measurePass(const Frame& frame, FrameStats& stats);
     void setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const;
     void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cullBackFaces) const;
     enum class Surfaces { All, OpaqueAndMasked, Blended };
@@ -80,6 +87,12 @@ private:
     gl::Framebuffer nearFramebuffer_;
     int nearWidth_ = 0, nearHeight_ = 0;
     ShadowSetup lastSetup_{};
+    gl::Program measure_;  // built on first use
+    MeasureTargets measureTargets_;
+    struct MeasureRequest {
+        MeasureTargets* targets = nullptr;  // set only inside renderMeasured
+        MeasureFrame* out = nullptr;
+    } measureRequest_;
     GpuTimer shadowTimer_, termTimer_, blurTimer_, forwardTimer_;
 };
 

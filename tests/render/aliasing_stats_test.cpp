@@ -33,6 +33,38 @@ TEST(AliasingStats, QuantilesOfTheMeasuredPixelsOnly) {
     EXPECT_EQ(aliasingStats(RgbaImage{4, 4, std::vector<std::uint8_t>(64, 0)}).measuredPixels, 0u);
 }
 
+TEST(FootprintStats, UnclampedQuantilesOverMeasuredPixels) {
+    // 0 = not measured, NaN skipped; 100 measured values 1..100 and one far beyond the old 256 clamp.
+    std::vector<float> values(50, 0.0f);
+    for (int i = 1; i <= 100; ++i) values.push_back(float(i));
+    values.push_back(std::nanf(""));
+    values.push_back(1000.0f);
+    const AliasingStats s = footprintStats(values);
+    EXPECT_EQ(s.measuredPixels, 101u);
+    EXPECT_DOUBLE_EQ(s.median, 51.0);
+    EXPECT_DOUBLE_EQ(s.p95, 96.0);
+    EXPECT_DOUBLE_EQ(s.p99, 100.0);
+    EXPECT_DOUBLE_EQ(s.max, 1000.0);
+    EXPECT_NEAR(s.mean, (5050.0 + 1000.0) / 101.0, 1e-9);
+    EXPECT_NEAR(s.undersampledFraction, 100.0 / 101.0, 1e-12);  // all but the value 1
+    EXPECT_EQ(footprintStats({}).measuredPixels, 0u);
+}
+
+TEST(FootprintStats, LogDepthBinsSplitADecade) {
+    // Depths 1, 2, 5, 9.9 and an out-of-range 20; two bins over [1, 10] split at sqrt(10).
+    const std::vector<float> depth{1.0f, 2.0f, 5.0f, 9.9f, 20.0f, 3.0f};
+    const std::vector<float> value{1.0f, 3.0f, 10.0f, 20.0f, 99.0f, 0.0f};
+    const auto bins = binByLogDepth(depth, value, 1.0, 10.0, 2);
+    ASSERT_EQ(bins.size(), 2u);
+    EXPECT_NEAR(bins[0].zHigh, std::sqrt(10.0), 1e-12);
+    EXPECT_NEAR(bins[0].zCentre, std::pow(10.0, 0.25), 1e-12);
+    EXPECT_EQ(bins[0].pixels, 2u);
+    EXPECT_DOUBLE_EQ(bins[0].mean, 2.0);
+    EXPECT_EQ(bins[1].pixels, 2u);
+    EXPECT_DOUBLE_EQ(bins[1].mean, 15.0);
+    EXPECT_TRUE(binByLogDepth(depth, value, 0.0, 10.0, 2).empty());
+}
+
 // Thesis 8.1: a perspective reparameterization gives the receivers near the viewer more of the
 // map, so looking along the ground with the sun from the side, LiSPSM's median error is below SSM's.
 class AliasingRender : public RenderTest {};
