@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -25,6 +26,7 @@ struct RenderOptions {
     int width = 1280;
     int height = 720;
     bool measure = false;
+    std::string statsFile;  // --stats: the frame's figures as JSON
     SettingsOverrides overrides;
 };
 
@@ -53,6 +55,15 @@ void measureMethod(Renderer& renderer, const Scene& scene, const Settings& setti
     std::printf("%-14s %9.2f %13zu %22.3f %7.3f %7.2f %13.1f%%\n", methodName(settings.method), frameMs,
                 a.measuredPixels, a.median, a.p95, a.max, 100.0 * a.undersampledFraction);
     (void)stats;
+}
+
+// The figures of the frame just rendered (the first method's), GPU times included.
+void writeStats(Renderer& renderer, const std::string& file) {
+    glFinish();
+    renderer.resolveTimings();
+    std::ofstream out(file);
+    out << frameStatsJson(renderer.lastFrameStats()) << "\n";
+    if (!out) fail("cannot write " + file);
 }
 
 void runRender(const RenderOptions& options) {
@@ -92,6 +103,7 @@ void runRender(const RenderOptions& options) {
         RgbaImage part = target.readColor();
         if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
         image.blit(part, options.width * int(i), 0);
+        if (!options.statsFile.empty() && i == 0) writeStats(*renderer, options.statsFile);
         if (options.measure) measureMethod(*renderer, *scene, view, target, i == 0);
     }
     if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
@@ -112,6 +124,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
     cmd->add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm, lispsm, or all (side by side)");
     cmd->add_option("--set", options->overrides.sets, "a setting as key=value, e.g. bias.mode=slope (repeatable)");
+    cmd->add_option("--stats", options->statsFile,
+                    "write the frame's figures as JSON: draw calls and triangles per pass, instances culled "
+                    "(view / caster), CPU ms per stage, GPU ms per pass, whether the shadow map was reused");
     cmd->add_flag("--measure", options->measure,
                   "print, per method, the frame time and the perspective aliasing error (screen pixels per "
                   "shadow-map texel, thesis 8.2.1) over the visible receivers");

@@ -12,6 +12,11 @@ public:
     void begin();
     void end();
     double lastMs() const { return lastMs_; }
+    bool pending() const {
+        for (bool p : pending_)
+            if (p) return true;
+        return false;
+    }
     // Waits for every query in flight (headless single frames, tests).
     void resolveBlocking();
 

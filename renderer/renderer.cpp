@@ -65,14 +65,68 @@ std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     return r;
 }
 
-void Renderer::setScene(const Scene& scene) { gpuScene_ = std::make_unique<GpuScene>(scene); }
+void Renderer::setScene(const Scene& scene) {
+    gpuScene_ = std::make_unique<GpuScene>(scene);
+    culler_.setScene(scene);
+    scene_ = &scene;
+    ++sceneVersion_;
+}
 
 void Renderer::updateInstances(const Scene& scene) {
-    if (gpuScene_) gpuScene_->updateInstances(scene);
+    if (!gpuScene_) return;
+    gpuScene_->updateInstances(scene);
+    culler_.updateInstances(scene);
+    ++sceneVersion_;
 }
 
 void Renderer::resolveTimings() {
     for (GpuTimer* t : {&shadowTimer_, &termTimer_, &blurTimer_, &forwardTimer_}) t->resolveBlocking();
+    for (const auto& [pass, timer] : lastTimedPasses_)
+        if (pass < lastStats_.passes.size()) lastStats_.passes[pass].gpuMs = timer->lastMs();
+}
+
+bool Renderer::timingsPending() const {
+    for (const GpuTimer* t : {&shadowTimer_, &termTimer_, &blurTimer_, &forwardTimer_})
+        if (t->pending()) return true;
+    return false;
+}
+
+void Renderer::cullView(Frame& frame, FrameStats& stats) const {
+    const auto start = Clock::now();
+    const bool hierarchical = frame.settings.skip.hierarchicalCulling;
+    culler_.visible(frame.scene, clipPlanes(frame.viewProjection), hierarchical, frame.visible);
+    stats.instances = frame.scene.instances.size();
+    stats.instancesVisible = frame.visible.size();
+    stats.hierarchicalCulling = hierarchical;
+    stats.cullingCpuMs += msSince(start);
+}
+
+void Renderer::cullCasters(Frame& frame, FrameStats& stats) const {
+    const auto start = Clock::now();
+    culler_.casters(frame.scene, frame.shadow, frame.settings.skip.hierarchicalCulling, frame.casters);
+    stats.castersDrawn = frame.casters.size();
+    stats.castersCulled = frame.scene.instances.size() - frame.casters.size();
+    stats.cullingCpuMs += msSince(start);
+}
+
+ShadowMapKey Renderer::shadowMapKey(const Frame& frame) const {
+    const BiasSettings& bias = frame.settings.bias;
+    const bool slope = bias.mode == DepthOffset::SlopeScale;
+    ShadowMapKey key;
+    key.scene = &frame.scene;
+    key.sceneVersion = sceneVersion_;
+    key.size = frame.settings.shadowMapSize;
+    key.worldToShadowClip = frame.worldToShadowClip;
+    key.reversedDepth = frame.reversedDepth;
+    key.linearDepth = frame.linearDepth;
+    key.linear = frame.linear;
+    key.mirrored = frame.shadowMapMirrored;
+    key.offsetMode = int(bias.mode);
+    key.slopeFactor = slope ? bias.slopeFactor : 0.0;
+    key.slopeUnits = slope ? bias.slopeUnits : 0.0;
+    key.backFaces = bias.backFaces;
+    key.casters = frame.casters;
+    return key;
 }
 
 FrameStats Renderer::render(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport) {
@@ -85,11 +139,13 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     stats.lightNote = frame.light.note;
     lastSetup_ = ShadowSetup{};  // a frame without shadows must not show the previous frame's B
     if (!gpuScene_) return stats;
+    cullView(frame, stats);
 
     if (settings.shadows && frame.light.castsShadow) {
         const bool psmAutoNear = settings.method == ShadowMethod::Psm && settings.psm.autoNear;
         const bool lispsmAutoFar = settings.method == ShadowMethod::Lispsm && settings.lispsm.autoVirtualFar;
         const VisibleDepth visible = psmAutoNear || lispsmAutoFar ? visibleDepthRange(frame, stats) : VisibleDepth{};
+        if (psmAutoNear || lispsmAutoFar) stats.visibleDepth = VisibleDepthSource::Measured;
         ViewFrustum shadowView = view;
         // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows
         // (halved: a quarter-resolution pixel may miss thin geometry in front).
@@ -113,24 +169,24 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         frame.linear = frame.shadow.linearDepth;
         frame.shadowMapMirrored =
             !lightFacingIsCounterClockwise(frame.worldToShadowClip, frame.light, frame.shadow.bodyBounds);
-        frame.casters.assign(scene.instances.size(), 0);
-        for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-            const bool reaches = casterCanReach(frame.shadow, scene.instances[i].worldBounds);
-            frame.casters[i] = reaches ? 1 : 0;
-            ++(reaches ? stats.castersDrawn : stats.castersCulled);
-        }
-    }
-    const ClipPlanes planes = clipPlanes(frame.viewProjection);
-    frame.visible.assign(scene.instances.size(), 0);
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        frame.visible[i] = boxMayBeVisible(planes, scene.instances[i].worldBounds) ? 1 : 0;
-        stats.instancesVisible += frame.visible[i];
+        cullCasters(frame, stats);
     }
     double prePassMs = 0.0;  // the PSM near pre-pass reports itself
     for (const PassStats& p : stats.passes) prePassMs += p.cpuMs;
     stats.passes.push_back({"setup + culling (CPU)", msSince(setupStart) - prePassMs, 0.0});
+    timedPasses_.clear();
 
-    if (frame.shadowed) shadowPass(frame, stats);
+    if (frame.shadowed) {
+        ShadowMapKey key = shadowMapKey(frame);
+        stats.shadowMapReused = settings.skip.reuseShadowMap && shadowMap_.holds(key);
+        if (stats.shadowMapReused) {
+            stats.shadowMapSize = shadowMap_.size();
+            stats.passes.push_back({"shadow map (reused)", 0.0, 0.0});
+        } else {
+            shadowPass(frame, stats);
+            shadowMap_.setContent(std::move(key));
+        }
+    }
     const bool blur = frame.shadowed && settings.filter.blurIterations > 0;
     if (blur) {
         shadowTermPass(frame, stats);
@@ -140,6 +196,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     }
     forwardPass(frame, stats);
     if (measureRequest_.targets) measurePass(frame, stats);
+    stats.trianglesDrawn = stats.shadowPass.triangles + stats.depthPrePass.triangles + stats.forwardPass.triangles;
+    stats.drawCalls += stats.shadowPass.drawCalls + stats.depthPrePass.drawCalls + stats.forwardPass.drawCalls;
+    lastStats_ = stats;
+    lastTimedPasses_ = timedPasses_;
     return stats;
 }
 
@@ -161,9 +221,12 @@ void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int m
     else glDisable(GL_CULL_FACE);
 }
 
-void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
-                         FrameStats& stats, Surfaces surfaces, bool targetMirrored) const {
+void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances,
+                         bool cullFrontFaces, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
     const Scene& scene = frame.scene;
+    if (instances.empty()) return;
+    InstanceMask mask(scene.instances.size(), 0);
+    for (std::uint32_t i : instances) mask[i] = 1;
     gpuScene_->bindVertexArray();
     glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
     gpuScene_->forEachRun(scene, mask, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
@@ -179,8 +242,8 @@ void Renderer::drawScene(const gl::Program& program, const Frame& frame, const I
             GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
             reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
             prim.baseVertex, firstSlot);
-        ++stats.drawCalls;
-        stats.trianglesDrawn += std::size_t(prim.indexCount / 3) * std::size_t(count);
+        ++counts.drawCalls;
+        counts.triangles += std::size_t(prim.indexCount / 3) * std::size_t(count);
     });
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
@@ -210,8 +273,7 @@ Renderer::VisibleDepth Renderer::visibleDepthRange(const Frame& frame, FrameStat
     glDepthFunc(GL_LESS);
     shadowDepth_.use();
     shadowDepth_.set("uWorldToShadowClip", glm::mat4(frame.viewProjection));
-    FrameStats drawStats;
-    drawScene(shadowDepth_, frame, frame.visible, false, drawStats);
+    drawScene(shadowDepth_, frame, frame.visible, false, stats.depthPrePass);
     std::vector<float> depth(std::size_t(w) * h);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, nearFramebuffer_.id());
@@ -219,7 +281,6 @@ Renderer::VisibleDepth Renderer::visibleDepthRange(const Frame& frame, FrameStat
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_TEST);
     unbindPassResources({0});
-    stats.drawCalls += drawStats.drawCalls;
     float nearestDepth = 1.0f, farthestDepth = 0.0f;
     for (float d : depth) {
         if (!(d < 1.0f)) continue;  // background
@@ -271,10 +332,9 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
     program.set("uLinearAxis", glm::vec3(frame.linear.axis));
     program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
-    FrameStats drawStats;
     // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
-    drawScene(program, frame, frame.casters, s.bias.backFaces, drawStats, Surfaces::All, frame.shadowMapMirrored);
-    stats.drawCalls += drawStats.drawCalls;
+    drawScene(program, frame, frame.casters, s.bias.backFaces, stats.shadowPass, Surfaces::All,
+              frame.shadowMapMirrored);
 
     glDisable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(0.0f, 0.0f);
@@ -284,6 +344,7 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     unbindPassResources({0});
     shadowTimer_.end();
     stats.passes.push_back({"shadow map", msSince(cpuStart), shadowTimer_.lastMs()});
+    timedPasses_.push_back({stats.passes.size() - 1, &shadowTimer_});
 }
 
 void Renderer::setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const {
@@ -339,11 +400,12 @@ void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
     termFrame.viewport = Viewport{termTargets_.framebuffer(0), 0, 0, vp.width, vp.height};
     setLightingUniforms(program, termFrame, false);
     program.set("uOutputMode", 2);
-    drawScene(program, frame, frame.visible, false, stats);
+    drawScene(program, frame, frame.visible, false, stats.forwardPass);
     glDisable(GL_DEPTH_TEST);
     unbindPassResources({0, 1});
     termTimer_.end();
     stats.passes.push_back({"shadow term", msSince(cpuStart), termTimer_.lastMs()});
+    timedPasses_.push_back({stats.passes.size() - 1, &termTimer_});
 }
 
 void Renderer::blurPasses(const Frame& frame, FrameStats& stats) {
@@ -376,6 +438,7 @@ void Renderer::blurPasses(const Frame& frame, FrameStats& stats) {
     unbindPassResources({0, 1});
     blurTimer_.end();
     stats.passes.push_back({"blur x" + std::to_string(s.filter.blurIterations), msSince(cpuStart), blurTimer_.lastMs()});
+    timedPasses_.push_back({stats.passes.size() - 1, &blurTimer_});
 }
 
 void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
@@ -414,11 +477,11 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     if (mode == ViewMode::AliasingErrorRaw) glDisable(GL_FRAMEBUFFER_SRGB);
 
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
-    drawScene(program, frame, frame.visible, false, stats, Surfaces::OpaqueAndMasked);
+    drawScene(program, frame, frame.visible, false, stats.forwardPass, Surfaces::OpaqueAndMasked);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
-    drawScene(program, frame, frame.visible, false, stats, Surfaces::Blended);
+    drawScene(program, frame, frame.visible, false, stats.forwardPass, Surfaces::Blended);
 
     // Restore what this pass changed.
     glDisable(GL_BLEND);
@@ -431,6 +494,7 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     unbindPassResources({0, 1, 2});
     forwardTimer_.end();
     stats.passes.push_back({"forward", msSince(cpuStart), forwardTimer_.lastMs()});
+    timedPasses_.push_back({stats.passes.size() - 1, &forwardTimer_});
 }
 
 }  // namespace shadowlab

@@ -5,6 +5,7 @@
 //
 //   shadow setup (GL-free math: B, SSM/PSM/LiSPSM matrix)  ->  caster culling against B
 //   shadow pass (depth map)  ->  [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
+#include "culling/instance_culling.h"
 #include "frame_setup.h"
 #include "frame_stats.h"
 #include "gl/program.h"
@@ -47,8 +48,13 @@ public:
     FrameStats renderMeasured(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport,
                               MeasureFrame& out);
 
-    // Waits for the GPU timings of the frames in flight (headless renders report real GPU ms).
+    // Waits for the GPU timings of the frames in flight (headless renders report real GPU ms) and
+    // fills them into lastFrameStats().
     void resolveTimings();
+    // Timer queries issued and not yet read back (the viewer may poll for them without drawing).
+    bool timingsPending() const;
+    // The stats of the last render() call, with GPU times filled in by resolveTimings().
+    const FrameStats& lastFrameStats() const { return lastStats_; }
 
     // The last shadow map (depth texture), for insets; 0 before the first shadowed frame.
     GLuint shadowMapTexture() const { return shadowMap_.texture(); }
@@ -64,6 +70,9 @@ private:
         double nearest = -1.0, farthest = -1.0;
     };
     VisibleDepth visibleDepthRange(const Frame& frame, FrameStats& stats);
+    void cullView(Frame& frame, FrameStats& stats) const;
+    void cullCasters(Frame& frame, FrameStats& stats) const;
+    ShadowMapKey shadowMapKey(const Frame& frame) const;
     void shadowPass(const Frame& frame, FrameStats& stats);
     void shadowTermPass(const Frame& frame, FrameStats& stats);
     void blurPasses(const Frame& frame, FrameStats& stats);
@@ -72,8 +81,8 @@ private:
     void setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const;
     void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cullBackFaces) const;
     enum class Surfaces { All, OpaqueAndMasked, Blended };
-    void drawScene(const gl::Program& program, const Frame& frame, const InstanceMask& mask, bool cullFrontFaces,
-                   FrameStats& stats, Surfaces surfaces = Surfaces::All, bool targetMirrored = false) const;
+    void drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances, bool cullFrontFaces,
+                   PassCounts& counts, Surfaces surfaces = Surfaces::All, bool targetMirrored = false) const;
 
     gl::Program forward_;
     gl::Program shadowDepth_;        // hyperbolic depth (the warp's own)
@@ -81,6 +90,9 @@ private:
     gl::Program blur_;
     gl::VertexArray emptyVao_;  // fullscreen triangles read no attributes
     std::unique_ptr<GpuScene> gpuScene_;
+    InstanceCuller culler_;
+    const Scene* scene_ = nullptr;    // the scene uploaded last
+    std::uint64_t sceneVersion_ = 0;  // bumped by setScene and updateInstances
     ShadowMap shadowMap_;
     ShadowTermTargets termTargets_;
     gl::Texture nearDepth_;  // PSM auto near / LiSPSM auto z_f: a small depth-only view of the scene
@@ -94,6 +106,9 @@ private:
         MeasureFrame* out = nullptr;
     } measureRequest_;
     GpuTimer shadowTimer_, termTimer_, blurTimer_, forwardTimer_;
+    FrameStats lastStats_;
+    std::vector<std::pair<std::size_t, GpuTimer*>> timedPasses_;
+    std::vector<std::pair<std::size_t, GpuTimer*>> lastTimedPasses_;  // pass index in lastStats_, its timer
 };
 
 }  // namespace shadowlab

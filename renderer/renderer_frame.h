@@ -18,8 +18,8 @@ struct Renderer::Frame {
     bool linearDepth = false;
     bool reversedDepth = false;
     LinearShadowDepth linear;
-    InstanceMask casters;
-    InstanceMask visible;  // view-frustum culling of the shadow-term and forward passes
+    InstanceList casters;
+    InstanceList visible;  // view-frustum culling of the shadow-term and forward passes
     bool shadowMapMirrored = false;  // the warp flips the winding of light-facing triangles
 };
 

@@ -62,8 +62,8 @@ void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     program.set("uPixelRayDx", glm::vec3(right * perPixel));
     program.set("uPixelRayDy", glm::vec3(up * perPixel));
     if (!frame.shadowed) program.set("uShadowTexel", glm::vec2(1.0f));
-    FrameStats drawStats;
-    drawScene(program, frame, frame.visible, false, drawStats, Surfaces::OpaqueAndMasked);
+    PassCounts drawCounts;
+    drawScene(program, frame, frame.visible, false, drawCounts, Surfaces::OpaqueAndMasked);
 
     glDisable(GL_DEPTH_TEST);
     for (GLuint unit : {0u, 1u, 2u}) {

@@ -5,8 +5,21 @@
 
 namespace shadowlab {
 
+bool ShadowMapKey::operator==(const ShadowMapKey& o) const {
+    const auto sameLinear = [](const LinearShadowDepth& a, const LinearShadowDepth& b) {
+        return a.radial == b.radial && a.origin == b.origin && a.axis == b.axis && a.nearDepth == b.nearDepth &&
+               a.farDepth == b.farDepth;
+    };
+    return scene == o.scene && sceneVersion == o.sceneVersion && size == o.size &&
+           worldToShadowClip == o.worldToShadowClip && reversedDepth == o.reversedDepth &&
+           linearDepth == o.linearDepth && (!linearDepth || sameLinear(linear, o.linear)) && mirrored == o.mirrored &&
+           offsetMode == o.offsetMode && slopeFactor == o.slopeFactor && slopeUnits == o.slopeUnits &&
+           backFaces == o.backFaces && casters == o.casters;
+}
+
 void ShadowMap::ensure(int size) {
     if (size == size_) return;
+    hasContent_ = false;
     depth_ = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
     framebuffer_ = gl::createFramebuffer();

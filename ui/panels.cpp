@@ -1,6 +1,7 @@
 #include "panels.h"
 
 #include "frame_setup.h"
+#include "skip_panel.h"
 #include "widgets.h"
 
 #include <imgui.h>
@@ -549,6 +550,7 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
     if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen))
         result.changed |= drawOverlayPanel(s, ctx.observer ? *ctx.observer : localObserver);
     if (ImGui::CollapsingHeader("Split compare")) result.changed |= drawComparePanel(s);
+    if (ImGui::CollapsingHeader("Skips")) result.changed |= drawSkipPanel(s);
     if (ImGui::CollapsingHeader("View state", ImGuiTreeNodeFlags_DefaultOpen))
         result.requests = drawViewStatePanel(ctx.viewState ? *ctx.viewState : localViewState);
     ImGui::PopItemWidth();

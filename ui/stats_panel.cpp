@@ -50,8 +50,10 @@ void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, cons
             "later so the CPU never waits.");
     ImGui::Text("triangles drawn %zu (scene %zu)", stats.trianglesDrawn, status.sceneTriangles);
     ImGui::Text("draw calls %zu, instances visible %zu", stats.drawCalls, stats.instancesVisible);
+    ImGui::Text("culling %.3f ms (%s)", stats.cullingCpuMs, stats.hierarchicalCulling ? "BVH" : "linear");
     if (stats.shadowMapSize > 0) {
-        ImGui::Text("shadow map %d x %d", stats.shadowMapSize, stats.shadowMapSize);
+        ImGui::Text("shadow map %d x %d: %s", stats.shadowMapSize, stats.shadowMapSize,
+                    stats.shadowMapReused ? "reused" : "rendered");
         ImGui::Text("casters drawn %zu, culled %zu", stats.castersDrawn, stats.castersCulled);
         helpMarker(
             "Casters whose bounds cannot reach the intersection body B are not drawn into the shadow map "

@@ -108,6 +108,17 @@ struct AnimationSettings {
     bool operator==(const AnimationSettings&) const = default;
 };
 
+// Work the renderer skips when a frame does not need it (issue 11). Each switch exists so a user
+// and a test can compare: with every skip on or off a frame must look the same.
+struct SkipSettings {
+    bool reuseShadowMap = true;        // keep last frame's map when nothing it depends on changed
+    bool hierarchicalCulling = true;   // view and caster culling through a BVH over instance bounds
+    bool asyncDepthReadback = true;    // visible-depth pre-pass read back one frame late (PBO + fence)
+    bool groupedDraws = true;          // one instanced call per primitive and pass, not per run of slots
+    bool shaderVariants = true;        // untextured / opaque materials skip texture fetch and alpha test
+    bool operator==(const SkipSettings&) const = default;
+};
+
 struct Settings {
     ShadowMethod method = ShadowMethod::Lispsm;
     int shadowMapSize = 2048;  // 256..8192
@@ -122,6 +133,7 @@ struct Settings {
     OverlaySettings overlays;
     CompareSettings compare;
     AnimationSettings animation;
+    SkipSettings skip;
     bool operator==(const Settings&) const = default;
 };
 

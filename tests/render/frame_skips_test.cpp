@@ -1,0 +1,147 @@
+// Issue 11: every skip (shadow-map reuse, BVH culling, async depth readback, grouped draws, shader
+// variants) changes the work, never the picture. The forest's views and Sponza are rendered with
+// every skip on and with every skip off and must give identical images; small images keep this
+// fast on llvmpipe.
+#include "render_helpers.h"
+#include "scenes/gltf_loader.h"
+#include "test_scenes.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <map>
+#include <memory>
+
+namespace shadowlab::test {
+namespace {
+
+Settings withSkips(Settings s, bool on) {
+    s.skip.reuseShadowMap = on;
+    s.skip.hierarchicalCulling = on;
+    s.skip.asyncDepthReadback = on;
+    s.skip.groupedDraws = on;
+    s.skip.shaderVariants = on;
+    return s;
+}
+
+class FrameSkips : public RenderTest {
+protected:
+    static const Scene* loaded(const std::string& file) {
+        static std::map<std::string, std::unique_ptr<Scene>> cache;
+        auto it = cache.find(file);
+        if (it == cache.end()) {
+            LoadResult r = loadScene(file);
+            EXPECT_TRUE(r.ok()) << r.error;
+            it = cache.emplace(file, r.ok() ? std::make_unique<Scene>(std::move(*r.scene)) : nullptr).first;
+        }
+        return it->second.get();
+    }
+
+    // The image a view settles on: a second frame of the same view (the async depth readback
+    // measures in the first). With skips on, that frame also reuses the first frame's map.
+    RgbaImage settled(const Scene& scene, const Settings& s, FrameStats* stats = nullptr) {
+        render(scene, s);
+        return render(scene, s, stats);
+    }
+
+    // Renders every (view, method) with skips on and off; returns how many maps were reused.
+    int expectSameImages(const Scene& scene, const std::vector<Settings>& views) {
+        int reused = 0;
+        for (std::size_t v = 0; v < views.size(); ++v) {
+            FrameStats on, off;
+            const RgbaImage a = settled(scene, withSkips(views[v], true), &on);
+            const RgbaImage b = settled(scene, withSkips(views[v], false), &off);
+            EXPECT_EQ(a.pixels, b.pixels) << "view " << v << " (" << methodName(views[v].method) << ")";
+            EXPECT_EQ(on.instancesVisible, off.instancesVisible) << "view " << v;
+            EXPECT_EQ(on.castersDrawn, off.castersDrawn) << "view " << v;
+            EXPECT_FALSE(off.shadowMapReused);
+            reused += on.shadowMapReused ? 1 : 0;
+        }
+        return reused;
+    }
+};
+
+TEST_F(FrameSkips, ForestViewsLookTheSameWithEverySkipOnAndOff) {
+    const Scene* forest = loaded(SHADOWLAB_BUILD_SCENES "/forest.glb");
+    ASSERT_TRUE(forest);
+    std::vector<Settings> views;
+    for (std::size_t c = 0; c < forest->cameras.size(); ++c) {
+        Settings s;
+        s.camera = cameraFromScene(forest->cameras[c], s.camera);
+        s.shadowMapSize = 512;
+        s.method = std::array{ShadowMethod::Lispsm, ShadowMethod::Psm, ShadowMethod::SsmFocused}[c % 3];
+        if (c == 1) s.filter.blurIterations = 1;  // the shadow-term pass and its culling too
+        views.push_back(s);
+    }
+    ASSERT_GE(views.size(), 3u);
+    EXPECT_EQ(expectSameImages(*forest, views), int(views.size()));  // every settled frame reused its map
+}
+
+TEST_F(FrameSkips, SponzaLooksTheSameWithEverySkipOnAndOff) {
+    const Scene* sponza = loaded(SHADOWLAB_SHARED_SCENES "/Sponza/Sponza.gltf");
+    ASSERT_TRUE(sponza);
+    std::vector<Settings> views;
+    for (ShadowMethod m : {ShadowMethod::Lispsm}) {  // PSM and SSM: the forest views
+        Settings s;
+        if (!sponza->cameras.empty()) s.camera = cameraFromScene(sponza->cameras.front(), s.camera);
+        s.shadowMapSize = 512;
+        s.method = m;
+        views.push_back(s);
+    }
+    expectSameImages(*sponza, views);
+}
+
+TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgain) {
+    Scene scene = planeBoxScene();
+    Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
+    s.method = ShadowMethod::Lispsm;
+    s.filter.blurIterations = 1;
+    FrameStats stats;
+    settled(scene, s, &stats);
+    EXPECT_TRUE(stats.shadowMapReused);
+    auto reusedAfter = [&](auto change) {
+        Settings changed = s;
+        change(changed);
+        render(scene, changed, &stats);
+        const bool reused = stats.shadowMapReused;
+        settled(scene, s);  // back to the base view (and its map)
+        return reused;
+    };
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.filter.blurStrength = 2.5; }));
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.filter.blurIterations = 3; }));
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.filter.filter = ShadowFilter::Pcf4x4; }));
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.viewMode = ViewMode::ShadowTermOnly; }));
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.overlays.shadowMapInset = true; }));
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.bias.constant = 0.01; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.light.source = LightSource::Sun, c.light.azimuthDeg += 5.0; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.camera.yawDeg += 2.0; }));  // LiSPSM follows the view
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.shadowMapSize = 1024; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.bias.slopeFactor = 3.0; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.bias.backFaces = true; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.skip.reuseShadowMap = false; }));
+    // Moved casters (animation): the same settings, new instance matrices.
+    MeshInstance& box = scene.instances[1];
+    box.world = glm::translate(box.world, glm::dvec3(0.5, 0.0, 0.0));
+    box.worldBounds = scene.meshes[1].primitives[0].bounds.transformed(box.world);
+    renderer_->updateInstances(scene);
+    render(scene, s, &stats);
+    EXPECT_FALSE(stats.shadowMapReused);
+}
+
+TEST_F(FrameSkips, StatsJsonCarriesTheFiguresOfTheFrame) {
+    const Scene scene = planeBoxScene();
+    Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
+    FrameStats stats;
+    settled(scene, s, &stats);
+    const nlohmann::json j = nlohmann::json::parse(frameStatsJson(stats));
+    EXPECT_EQ(j["instances"], scene.instances.size());
+    EXPECT_EQ(j["shadowMapReused"], true);
+    EXPECT_EQ(j["shadowPass"]["drawCalls"], 0);  // reused: nothing drawn into the map
+    EXPECT_GT(j["forwardPass"]["triangles"].get<int>(), 0);
+    EXPECT_EQ(j["castersDrawn"].get<std::size_t>() + j["castersCulled"].get<std::size_t>(), scene.instances.size());
+    EXPECT_TRUE(j["passes"].is_array());
+    EXPECT_TRUE(j.contains("cullingCpuMs"));
+}
+
+}  // namespace
+}  // namespace shadowlab::test
