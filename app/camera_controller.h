@@ -1,5 +1,6 @@
 #pragma once
 // Orbit and fly camera over CameraSettings (GL-free, GLFW-free: the viewer feeds it input).
+#include "math/aabb.h"
 #include "settings/settings.h"
 
 namespace shadowlab::app {
@@ -15,9 +16,15 @@ struct CameraInput {
 
 class CameraController {
 public:
-    // Distance in front of the camera of the point orbiting turns around.
-    double orbitDistance = 10.0;
+    // The point right drag orbits around and the wheel dollies towards: the centre of the scene
+    // bounds (a point in front of the camera let small models swing out of view).
+    glm::dvec3 pivot{0.0};
     void apply(CameraSettings& camera, const CameraInput& input) const;
 };
+
+// The camera turned to look at the centre of `bounds` from its current direction, moved back until
+// the bounding sphere fits both the vertical and the horizontal field of view (Home / F), with the
+// far plane pushed out to the sphere's back if needed. Unchanged for empty or non-finite bounds.
+CameraSettings framedCamera(const CameraSettings& camera, const Aabb& bounds, double aspect);
 
 }  // namespace shadowlab::app
