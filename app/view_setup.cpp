@@ -1,6 +1,7 @@
 #include "view_setup.h"
 
 #include "frame_setup.h"
+#include "png_text.h"
 #include "scenes/gltf_loader.h"
 
 #include <fstream>
@@ -41,15 +42,32 @@ bool readTextFile(const std::string& file, std::string& text, std::string& error
     return true;
 }
 
-bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error) {
-    if (!overrides.viewFile.empty()) {
-        std::string text;
-        if (!readTextFile(overrides.viewFile, text, error)) return false;
-        if (!fromJsonText(text, settings, error)) {
-            error = overrides.viewFile + ": " + error;
-            return false;
-        }
+bool readViewFile(const std::string& file, Settings& settings, std::string& error) {
+    std::string text;
+    char head[8] = {};
+    std::ifstream probe(file, std::ios::binary);
+    probe.read(head, sizeof head);
+    if (probe.gcount() == 8 && std::string(head, 8) == "\x89PNG\r\n\x1a\n") {
+        std::optional<std::string> embedded = readPngTextFromFile(file, kSettingsPngKeyword, error);
+        if (!embedded) return false;
+        text = std::move(*embedded);
+    } else if (probe.gcount() >= 4 && std::string(head, 4) == "glTF") {
+        error = file + ": a glTF scene, not a view state (open it as a scene)";
+        return false;
+    } else if (!readTextFile(file, text, error)) {
+        return false;
     }
+    Settings loaded = settings;
+    if (!fromJsonText(text, loaded, error)) {
+        error = file + ": " + error;
+        return false;
+    }
+    settings = loaded;
+    return true;
+}
+
+bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error) {
+    if (!overrides.viewFile.empty() && !readViewFile(overrides.viewFile, settings, error)) return false;
     if (!overrides.method.empty() && overrides.method != "all") {
         ShadowMethod m{};
         if (!parseMethod(overrides.method, m)) {

@@ -1,7 +1,6 @@
 #include "panels.h"
 
 #include "frame_setup.h"
-#include "skip_panel.h"
 #include "widgets.h"
 
 #include <imgui.h>
@@ -14,8 +13,6 @@
 namespace shadowlab::ui {
 
 namespace {
-
-constexpr float kControlWidth = 370.0f;
 
 const ShadowMethod kMethods[] = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Psm,
                                  ShadowMethod::Lispsm};
@@ -492,79 +489,6 @@ bool drawComparePanel(Settings& s) {
     }
     ImGui::EndDisabled();
     return changed;
-}
-
-ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
-    ViewStateRequests r;
-    ImGui::InputText("file", ui.file, sizeof ui.file);
-    tip("The view state JSON: camera, light, method and every parameter. Exactly the file `shadowlab render "
-        "--view FILE` and `shadowlab --view FILE` take, so any screenshot can be reproduced headless.");
-    r.save = ImGui::Button("save view");
-    ImGui::SameLine();
-    r.load = ImGui::Button("load view");
-    ImGui::SameLine();
-    r.screenshot = ImGui::Button("screenshot (F12)");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png (window with panels) in the working directory.");
-    if (ImGui::TreeNode("keys and mouse")) {
-        ImGui::TextUnformatted(
-            "left drag: look     right drag: orbit     wheel: dolly\n"
-            "W A S D Q E: fly (shift: 4x)\n"
-            "1 2 3 4: SSM, SSM unfocused, PSM, LiSPSM\n"
-            "space: play / pause     F1: hide panels     F12: screenshot\n"
-            "drag / wheel over the observer inset: move the observer\n"
-            "drop a .json: apply a view     drop a .gltf/.glb: open it");
-        ImGui::TreePop();
-    }
-    return r;
-}
-
-float controlWindowWidth() { return kControlWidth; }
-
-ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float width, float height) {
-    ControlResult result;
-    ImGui::SetNextWindowPos(ImVec2(width - kControlWidth, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(kControlWidth, height), ImGuiCond_Always);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
-    if (!ImGui::Begin("shadowlab controls", nullptr, flags)) {
-        ImGui::End();
-        return result;
-    }
-    ImGui::PushItemWidth(kControlWidth * 0.5f);
-    static const FrameStats kNoStats{};
-    const FrameStats& stats = ctx.stats ? *ctx.stats : kNoStats;
-    static const Scene kNoScene{};
-    const Scene& scene = ctx.scene ? *ctx.scene : kNoScene;
-    static ObserverView localObserver;
-    static ViewStateUi localViewState;
-
-    if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) result.changed |= drawMethodPanel(s, stats);
-    if (ImGui::CollapsingHeader("LiSPSM", s.method == ShadowMethod::Lispsm ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-        result.changed |= drawLispsmPanel(s, stats.shadow, ctx.autoVirtualFar);
-    if (ImGui::CollapsingHeader("PSM")) result.changed |= drawPsmPanel(s, stats.shadow);
-    if (ImGui::CollapsingHeader("Bias")) result.changed |= drawBiasPanel(s);
-    if (ImGui::CollapsingHeader("Filter & blur")) result.changed |= drawFilterPanel(s);
-    if (ImGui::CollapsingHeader("Light")) result.changed |= drawLightPanel(s, scene);
-    if (ImGui::CollapsingHeader("Camera")) result.changed |= drawCameraPanel(s, scene);
-    if (ImGui::CollapsingHeader("Animation")) result.changed |= drawAnimationPanel(s, ctx.animation);
-    if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen))
-        result.changed |= drawOverlayPanel(s, ctx.observer ? *ctx.observer : localObserver);
-    if (ImGui::CollapsingHeader("Split compare")) result.changed |= drawComparePanel(s);
-    if (ImGui::CollapsingHeader("Skips")) result.changed |= drawSkipPanel(s);
-    if (ImGui::CollapsingHeader("View state", ImGuiTreeNodeFlags_DefaultOpen))
-        result.requests = drawViewStatePanel(ctx.viewState ? *ctx.viewState : localViewState);
-    ImGui::PopItemWidth();
-    ImGui::End();
-    return result;
-}
-
-void drawCaptions(const std::vector<Caption>& captions) {
-    ImDrawList* list = ImGui::GetBackgroundDrawList();
-    for (const Caption& c : captions) {
-        const ImVec2 size = ImGui::CalcTextSize(c.text.c_str());
-        list->AddRectFilled(ImVec2(c.x, c.y), ImVec2(c.x + size.x + 8.0f, c.y + size.y + 4.0f), IM_COL32(0, 0, 0, 170));
-        list->AddText(ImVec2(c.x + 4.0f, c.y + 2.0f), IM_COL32(255, 255, 255, 255), c.text.c_str());
-    }
 }
 
 }  // namespace shadowlab::ui

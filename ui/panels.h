@@ -63,6 +63,8 @@ struct ViewStateUi {
 // View state panel: save / load the JSON that `shadowlab render --view` takes; screenshot.
 ViewStateRequests drawViewStatePanel(ViewStateUi& ui);
 
+struct FileUi;
+
 // Everything the control window shows besides Settings.
 struct ControlContext {
     const FrameStats* stats = nullptr;
@@ -71,10 +73,12 @@ struct ControlContext {
     double autoVirtualFar = std::numeric_limits<double>::quiet_NaN();  // LiSPSM auto z_f this frame
     ObserverView* observer = nullptr;
     ViewStateUi* viewState = nullptr;
+    FileUi* file = nullptr;
 };
 struct ControlResult {
     bool changed = false;
     ViewStateRequests requests;
+    std::string openFile;  // File > Open, a recent file, or "load view": the viewer opens it by its kind
 };
 // The control window (right edge of a `width` x `height` framebuffer): every panel above as a
 // collapsing section.

@@ -14,6 +14,7 @@ struct ViewerStatus {
     std::string renderer;                   // GL_RENDERER
     std::string lastError;                  // e.g. a dropped file that failed to load
     std::string lastMessage;                // e.g. "saved screenshot ..."
+    std::vector<std::string> notices;       // e.g. "shadowMapSize 12345 -> 8192" (clamped values)
     std::vector<std::string> compareLines;  // one per split-compare view
 };
 

@@ -1,0 +1,142 @@
+#include "viewer_frame.h"
+
+#include "view_state.h"
+#include "widgets.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace shadowlab::app {
+
+InsetRect toGl(const InsetRect& r, int fbHeight) { return {r.x, fbHeight - r.y - r.height, r.width, r.height}; }
+
+bool contains(const InsetRect& r, double x, double y) {
+    return !r.empty() && x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height;
+}
+
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings) {
+    Layout l;
+    l.fbWidth = fbWidth;
+    l.fbHeight = fbHeight;
+    l.viewWidth = showUi ? std::max(16, fbWidth - int(ui::controlWindowWidth())) : fbWidth;
+    const int count = int(ui::shownMethods(settings).size());
+    for (int i = 0; i < count; ++i) {
+        const int x0 = l.viewWidth * i / count, x1 = l.viewWidth * (i + 1) / count;
+        l.views.push_back({x0, 0, std::max(1, x1 - x0 - (i + 1 < count ? 2 : 0)), fbHeight});
+    }
+    // Insets along the bottom edge of the 3D area, left to right, as many as are switched on.
+    const int margin = 12;
+    const int side = std::max(64, std::min({fbHeight / 3, l.viewWidth / 4, 360}));
+    int x = margin;
+    const int y = fbHeight - side - margin;
+    auto place = [&](InsetRect& r, bool on, int width) {
+        if (!on) return;
+        r = {x, y, width, side};
+        x += width + margin + 4;
+    };
+    place(l.shadowMapInset, settings.overlays.shadowMapInset, side);
+    place(l.lightViewInset, settings.overlays.lightViewInset, side);
+    place(l.observerInset, settings.overlays.observerInset, side * 4 / 3);
+    return l;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
+                const ui::ObserverView& observerView, ViewsResult& result, double seconds) {
+    Renderer& renderer = tools.renderer;
+    OverlayRenderer& overlays = tools.overlays;
+    const int fbHeight = layout.fbHeight;
+    const ViewFrustum viewFrustum0 =
+        viewFrustum(settings.camera, double(layout.views[0].width) / std::max(1, layout.views[0].height));
+    const LightFrame light = resolveLight(scene, settings.light, seconds);
+    const bool haveMap = result.stats.shadowMapSize > 0 && renderer.lastShadowSetup().valid;
+    const ShadowSetup& setup = renderer.lastShadowSetup();
+    auto noteFor = [&](const InsetRect& r, const std::string& title) {
+        result.captions.push_back({float(r.x + 4), float(r.y + 4), title});
+    };
+    if (!layout.shadowMapInset.empty()) {
+        const InsetRect r = toGl(layout.shadowMapInset, fbHeight);
+        overlays.drawFrame(0, r);
+        if (haveMap) overlays.drawDepthInset(0, r, renderer.shadowMapTexture(), setup.reverseDepthTest);
+        noteFor(layout.shadowMapInset, haveMap ? "shadow map" : "no shadow map");
+    }
+    if (!layout.lightViewInset.empty()) {
+        const InsetRect r = toGl(layout.lightViewInset, fbHeight);
+        overlays.drawFrame(0, r);
+        if (haveMap && renderer.gpuScene()) {
+            const glm::dmat4& m = setup.worldToShadowClip;  // w > 0 over B by contract
+            overlays.drawScene(0, r, scene, *renderer.gpuScene(), m, light.direction, setup.reverseDepthTest);
+            const double marker = 0.02 * std::max(1e-3, glm::length(setup.bodyBounds.extent()));
+            overlays.drawWires(
+                0, r,
+                overlayWires(setup.diagnostics, settings.overlays, viewFrustum0, scene.bounds, light.direction, marker),
+                m);
+        }
+        noteFor(layout.lightViewInset, haveMap ? "light view" : "no light view");
+    }
+    if (!layout.observerInset.empty() && renderer.gpuScene()) {
+        const InsetRect r = toGl(layout.observerInset, fbHeight);
+        overlays.drawFrame(0, r);
+        const ShadowDiagnostics& d = result.stats.shadow;
+        const ObserverCamera observer =
+            observerCamera(d, viewFrustum0, scene.bounds, observerView.yawDeg, observerView.pitchDeg,
+                           observerView.distance, double(r.width) / double(r.height));
+        overlays.drawScene(0, r, scene, *renderer.gpuScene(), observer.viewProjection(), light.direction, false);
+        overlays.drawWires(
+            0, r,
+            overlayWires(d, settings.overlays, viewFrustum0, scene.bounds, light.direction, observer.radius * 0.04),
+            observer.viewProjection());
+        noteFor(layout.observerInset, "observer");
+    }
+}
+
+}  // namespace
+
+ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
+                      const ui::ObserverView& observer) {
+    ViewsResult result;
+    const int fbHeight = layout.fbHeight;
+    const double seconds = settings.animation.time;
+    // The area right of the views (under the control window) is cleared once.
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, layout.fbWidth, layout.fbHeight);
+    const GLfloat clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, clear);
+    // Right to left, so the left view (whose shadow map and setup the insets show) is rendered last.
+    const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
+    result.paneStats.resize(methods.size());
+    for (int i = int(methods.size()) - 1; i >= 0; --i) {
+        Settings view = settings;
+        view.method = methods[std::size_t(i)];
+        const InsetRect r = toGl(layout.views[std::size_t(i)], fbHeight);
+        tools.timer.begin(i);
+        FrameStats viewStats = tools.renderer.render(scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
+        tools.timer.end(i);
+        if (methods.size() > 1) {
+            result.captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, methodName(view.method)});
+            result.compareLines.insert(result.compareLines.begin(),
+                                       std::string(methodName(view.method)) + ": GPU " +
+                                           ui::formatNumber(tools.timer.lastMs(i), 3) + " ms, casters " +
+                                           std::to_string(viewStats.castersDrawn) + " (culled " +
+                                           std::to_string(viewStats.castersCulled) + ")");
+        }
+        result.paneStats[std::size_t(i)] = viewStats;
+        if (i == 0) result.stats = std::move(viewStats);
+    }
+
+    const auto overlayStart = Clock::now();
+    tools.timer.begin(kOverlaySection);
+    drawInsets(tools, scene, settings, layout, observer, result, seconds);
+    tools.timer.end(kOverlaySection);
+    tools.timer.endFrame();
+    if (!layout.shadowMapInset.empty() || !layout.lightViewInset.empty() || !layout.observerInset.empty())
+        result.stats.passes.push_back({"overlays",
+                                       std::chrono::duration<double, std::milli>(Clock::now() - overlayStart).count(),
+                                       tools.timer.lastMs(kOverlaySection)});
+    return result;
+}
+
+}  // namespace shadowlab::app

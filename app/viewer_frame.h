@@ -1,0 +1,49 @@
+#pragma once
+// One frame of the viewer's 3D area: where the split views and insets go (Layout), and drawing
+// them with the Renderer and the OverlayRenderer. The ImGui panels are drawn elsewhere.
+#include "overlay.h"
+#include "overlay_timer.h"
+#include "panels.h"
+#include "renderer.h"
+
+#include <string>
+#include <vector>
+
+namespace shadowlab::app {
+
+// Screen layout of one frame, in framebuffer pixels with the origin at the TOP-left (ImGui's);
+// toGl() flips a rectangle to GL's bottom-left origin.
+struct Layout {
+    int fbWidth = 0, fbHeight = 0;
+    int viewWidth = 0;             // the 3D area: left of the control window
+    std::vector<InsetRect> views;  // top-left origin
+    InsetRect shadowMapInset, lightViewInset, observerInset;
+};
+
+InsetRect toGl(const InsetRect& r, int fbHeight);
+bool contains(const InsetRect& r, double x, double y);
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings);
+
+// What one frame of views reports back to the panels.
+struct ViewsResult {
+    FrameStats stats;                      // the left view's (its setup is what the insets show)
+    std::vector<FrameStats> paneStats;     // one per split view, left to right
+    std::vector<ui::Caption> captions;     // method names over split views, inset titles
+    std::vector<std::string> compareLines;
+};
+
+// GPU time of each split view (sections 0-2) and of the overlays (section 3).
+constexpr int kOverlaySection = 3;
+constexpr int kFrameSections = 4;
+
+struct FrameTools {
+    Renderer& renderer;
+    OverlayRenderer& overlays;
+    SectionTimer& timer;
+};
+
+// Clears the window and draws every split view and the switched-on insets.
+ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
+                      const ui::ObserverView& observer);
+
+}  // namespace shadowlab::app

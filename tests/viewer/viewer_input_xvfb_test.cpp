@@ -1,0 +1,88 @@
+// The real viewer under Xvfb driven by synthetic X events (tests/viewer/x11_send_input.cpp): key
+// taps far shorter than a frame all register, and a drag is measured from where the button went
+// down. The viewer runs until the synthetic close request and writes its settings (--save-view).
+#include "settings/settings.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Starts the viewer on the plane-box scene with `view`, sends `steps` once its window shows the
+// scene, and returns the settings it saved on close.
+Settings drive(const std::string& name, const std::string& view, const std::string& steps,
+               const std::string& viewerArgs = "") {
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    const fs::path viewFile = dir / (name + ".json"), saved = dir / (name + "-saved.json"),
+                   log = dir / (name + ".log");
+    std::ofstream(viewFile) << view;
+    fs::remove(saved);
+    const std::string inner = quoted(SHADOWLAB_EXE) + " " + quoted(PLANE_BOX_SCENE) +
+                              " --width 960 --height 540 --view " + quoted(viewFile) + " --save-view " +
+                              quoted(saved) + " " + viewerArgs + " & pid=$!; " + quoted(X11_SEND_INPUT) +
+                              " plane-box.glb sleep:400 " + steps + " close; wait $pid";
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' sh -c \"" + inner +
+                            "\" > " + quoted(log) + " 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd << "\n" << readFile(log);
+    Settings settings;
+    std::string error;
+    EXPECT_TRUE(fromJsonText(readFile(saved), settings, error)) << error << "\n" << readFile(log);
+    return settings;
+}
+
+TEST(ViewerInputUnderXvfb, ShortKeyTapsAllRegister) {
+    // Every tap changes the outcome: 1 then 3 ends on PSM (a lost 3 leaves SSM), three space taps
+    // end playing (a lost one leaves it paused). All taps reach the viewer within one flush, so
+    // press and release of each fall into the same frame.
+    const Settings s = drive("taps", R"({"method": "lispsm", "animation": {"playing": false, "time": 0.0}})",
+                             "key:1 key:3 key:space key:space key:space");
+    EXPECT_EQ(s.method, ShadowMethod::Psm);
+    EXPECT_TRUE(s.animation.playing);
+}
+
+TEST(ViewerInputUnderXvfb, ADragIsMeasuredFromThePress) {
+    // The pointer was last seen at (20, 20); the first report after the press comes from (400, 300)
+    // (where the button really went down) and only anchors the drag; then 50 pixels right turn the
+    // camera by 50 x 0.2 degrees. Measured from the previous position, the view would swing by 76.
+    const std::string view =
+        R"({"animation": {"playing": false, "time": 0.0}, "camera": {"yawDeg": -90.0, "pitchDeg": -10.0}})";
+    const Settings s = drive("drag", view, "move:20:20 sleep:300 press:1 move:400:300 move:450:300 release:1",
+                             "--no-ui");
+    EXPECT_NEAR(s.camera.yawDeg, -80.0, 1e-6);
+    EXPECT_NEAR(s.camera.pitchDeg, -10.0, 1e-6);
+}
+
+TEST(ViewerInputUnderXvfb, ABadSceneOnTheCommandLineOpensTheDefaultSceneWithTheError) {
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    const fs::path bad = dir / "not-a-scene.glb", shot = dir / "bad-scene.png", log = dir / "bad-scene.log";
+    std::ofstream(bad) << "glTF but not really";
+    fs::remove(shot);
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+                            " " + quoted(bad) + " --frames 2 --width 320 --height 200 --no-ui --screenshot " +
+                            quoted(shot) + " > " + quoted(log) + " 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << readFile(log);  // the window opened instead of exiting
+    EXPECT_NE(readFile(log).find("not-a-scene.glb"), std::string::npos) << readFile(log);  // the error is told
+    EXPECT_TRUE(fs::exists(shot)) << readFile(log);
+}
+
+}  // namespace
+}  // namespace shadowlab
