@@ -97,7 +97,7 @@ void runRender(const RenderOptions& options) {
     for (std::size_t i = 0; i < methods.size(); ++i) {
         Settings view = settings;
         view.method = methods[i];
-        FrameStats stats = renderer->render(*scene, view, settings.animation.time,
+        FrameStats stats = renderer->renderSettled(*scene, view, settings.animation.time,
                                             Viewport{target.framebuffer(), 0, 0, options.width, options.height});
         if (!stats.lightNote.empty() && i == 0) std::cerr << "shadowlab render: note: " << stats.lightNote << "\n";
         RgbaImage part = target.readColor();

@@ -69,6 +69,7 @@ void Renderer::setScene(const Scene& scene) {
     gpuScene_ = std::make_unique<GpuScene>(scene);
     culler_.setScene(scene);
     scene_ = &scene;
+    ++sceneLoads_;
     ++sceneVersion_;
 }
 
@@ -89,6 +90,13 @@ bool Renderer::timingsPending() const {
     for (const GpuTimer* t : {&shadowTimer_, &termTimer_, &blurTimer_, &forwardTimer_})
         if (t->pending()) return true;
     return false;
+}
+
+FrameStats Renderer::renderSettled(const Scene& scene, const Settings& settings, double seconds,
+                                   const Viewport& viewport) {
+    FrameStats stats = render(scene, settings, seconds, viewport);
+    for (int frame = 1; frame < 3 && stats.needsAnotherFrame; ++frame) stats = render(scene, settings, seconds, viewport);
+    return stats;
 }
 
 void Renderer::cullView(Frame& frame, FrameStats& stats) const {
@@ -144,8 +152,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     if (settings.shadows && frame.light.castsShadow) {
         const bool psmAutoNear = settings.method == ShadowMethod::Psm && settings.psm.autoNear;
         const bool lispsmAutoFar = settings.method == ShadowMethod::Lispsm && settings.lispsm.autoVirtualFar;
-        const VisibleDepth visible = psmAutoNear || lispsmAutoFar ? visibleDepthRange(frame, stats) : VisibleDepth{};
-        if (psmAutoNear || lispsmAutoFar) stats.visibleDepth = VisibleDepthSource::Measured;
+        // Neither feature on: no pre-pass at all.
+        const VisibleDepthRange visible =
+            psmAutoNear || lispsmAutoFar ? visibleDepthRange(frame, stats) : VisibleDepthRange{};
         ViewFrustum shadowView = view;
         // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows
         // (halved: a quarter-resolution pixel may miss thin geometry in front).
@@ -250,52 +259,22 @@ void Renderer::drawScene(const gl::Program& program, const Frame& frame, const I
     glDisable(GL_CULL_FACE);
 }
 
-Renderer::VisibleDepth Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
-    const auto cpuStart = Clock::now();
-    // A quarter-resolution depth pre-pass of what the camera sees (thesis 9.2.5 "depth-only pass";
-    // Stamminger & Drettakis read back the depth buffer the same way).
-    const int w = std::max(16, frame.viewport.width / 4), h = std::max(16, frame.viewport.height / 4);
-    if (w != nearWidth_ || h != nearHeight_) {
-        nearDepth_ = gl::createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(nearDepth_.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
-        nearFramebuffer_ = gl::createFramebuffer();
-        glNamedFramebufferTexture(nearFramebuffer_.id(), GL_DEPTH_ATTACHMENT, nearDepth_.id(), 0);
-        glNamedFramebufferDrawBuffer(nearFramebuffer_.id(), GL_NONE);
-        nearWidth_ = w;
-        nearHeight_ = h;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, nearFramebuffer_.id());
-    glViewport(0, 0, w, h);
-    const GLfloat farDepth = 1.0f;
-    glDepthMask(GL_TRUE);
-    glClearBufferfv(GL_DEPTH, 0, &farDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    shadowDepth_.use();
-    shadowDepth_.set("uWorldToShadowClip", glm::mat4(frame.viewProjection));
-    drawScene(shadowDepth_, frame, frame.visible, false, stats.depthPrePass);
-    std::vector<float> depth(std::size_t(w) * h);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, nearFramebuffer_.id());
-    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glDisable(GL_DEPTH_TEST);
-    unbindPassResources({0});
-    float nearestDepth = 1.0f, farthestDepth = 0.0f;
-    for (float d : depth) {
-        if (!(d < 1.0f)) continue;  // background
-        nearestDepth = std::min(nearestDepth, d);
-        farthestDepth = std::max(farthestDepth, d);
-    }
-    stats.passes.push_back({"visible depth pre-pass", msSince(cpuStart), 0.0});
-    if (!(nearestDepth < 1.0f)) return {};  // nothing visible
-    // Window depth d in [0, 1] back to eye distance (GL perspective).
-    const double n = frame.view.zNear, f = frame.view.zFar;
-    auto eyeDistance = [&](float d) {
-        const double ndcZ = 2.0 * double(d) - 1.0;
-        return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
+VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
+    DepthView view;
+    view.view = frame.view;
+    view.viewProjection = frame.viewProjection;
+    view.width = std::max(16, frame.viewport.width / 4);  // a quarter resolution is enough for a range
+    view.height = std::max(16, frame.viewport.height / 4);
+    view.sceneLoad = sceneLoads_;
+    view.sceneVersion = sceneVersion_;
+    auto drawDepth = [&](const glm::dmat4& viewProjection) {
+        shadowDepth_.use();
+        shadowDepth_.set("uWorldToShadowClip", glm::mat4(viewProjection));
+        drawScene(shadowDepth_, frame, frame.visible, false, stats.depthPrePass);
     };
-    return {eyeDistance(nearestDepth), eyeDistance(farthestDepth)};
+    const VisibleDepthRange range = visibleDepth_.range(view, frame.settings.skip.asyncDepthReadback, drawDepth, stats);
+    unbindPassResources({0});
+    return range;
 }
 
 void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {

@@ -13,6 +13,7 @@
 #include "gpu_timer.h"
 #include "measure_pass.h"
 #include "shadow_resources.h"
+#include "visible_depth.h"
 
 #include <memory>
 #include <string>
@@ -37,6 +38,10 @@ public:
     // Draws one view of `scene` with `settings` into `viewport`. `seconds` drives the animated sun.
     FrameStats render(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport);
 
+    // render() until the frame no longer depends on a readback in flight (FrameStats::
+    // needsAnotherFrame; at most three frames): what a headless single picture must show.
+    FrameStats renderSettled(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport);
+
     // Does a triangle facing the light come out counter-clockwise in the shadow map? Warps may
     // mirror the map (PSM's post-perspective space, reflected fits), which swaps what GL culls as
     // front and back; back-face rendering (thesis 5.1) must cull the faces that face the light.
@@ -53,6 +58,8 @@ public:
     void resolveTimings();
     // Timer queries issued and not yet read back (the viewer may poll for them without drawing).
     bool timingsPending() const;
+    // A visible-depth readback is in flight: FrameStats::needsAnotherFrame said so.
+    bool readbackPending() const { return visibleDepth_.pending(); }
     // The stats of the last render() call, with GPU times filled in by resolveTimings().
     const FrameStats& lastFrameStats() const { return lastStats_; }
 
@@ -64,12 +71,8 @@ public:
 private:
     Renderer() = default;
     struct Frame;
-    // Eye distances of the nearest and farthest visible geometry, from a quarter-resolution depth
-    // pre-pass (nearest < 0 when nothing is visible).
-    struct VisibleDepth {
-        double nearest = -1.0, farthest = -1.0;
-    };
-    VisibleDepth visibleDepthRange(const Frame& frame, FrameStats& stats);
+    // Eye distances of the nearest and farthest visible geometry (visible_depth.h).
+    VisibleDepthRange visibleDepthRange(const Frame& frame, FrameStats& stats);
     void cullView(Frame& frame, FrameStats& stats) const;
     void cullCasters(Frame& frame, FrameStats& stats) const;
     ShadowMapKey shadowMapKey(const Frame& frame) const;
@@ -92,12 +95,11 @@ private:
     std::unique_ptr<GpuScene> gpuScene_;
     InstanceCuller culler_;
     const Scene* scene_ = nullptr;    // the scene uploaded last
+    std::uint64_t sceneLoads_ = 0;    // bumped by setScene
     std::uint64_t sceneVersion_ = 0;  // bumped by setScene and updateInstances
     ShadowMap shadowMap_;
     ShadowTermTargets termTargets_;
-    gl::Texture nearDepth_;  // PSM auto near / LiSPSM auto z_f: a small depth-only view of the scene
-    gl::Framebuffer nearFramebuffer_;
-    int nearWidth_ = 0, nearHeight_ = 0;
+    VisibleDepthPrePass visibleDepth_;  // PSM auto near / LiSPSM auto z_f
     ShadowSetup lastSetup_{};
     gl::Program measure_;  // built on first use
     MeasureTargets measureTargets_;

@@ -12,6 +12,8 @@ namespace shadowlab {
 
 FrameStats Renderer::renderMeasured(const Scene& scene, const Settings& settings, double seconds,
                                     const Viewport& viewport, MeasureFrame& out) {
+    // The measured frame is the settled one (the async visible-depth readback has arrived).
+    renderSettled(scene, settings, seconds, viewport);
     measureRequest_ = {&measureTargets_, &out};
     struct Reset {
         MeasureRequest& request;

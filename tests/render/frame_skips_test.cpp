@@ -44,6 +44,11 @@ protected:
         return render(scene, s, stats);
     }
 
+    // One frame only (render() settles over the async readback): the frame right after a change.
+    FrameStats firstFrame(const Scene& scene, const Settings& s) {
+        return renderer_->render(scene, s, 0.0, Viewport{target_->framebuffer(), 0, 0, kWidth, kHeight});
+    }
+
     // Renders every (view, method) with skips on and off; returns how many maps were reused.
     int expectSameImages(const Scene& scene, const std::vector<Settings>& views) {
         int reused = 0;
@@ -102,8 +107,7 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     auto reusedAfter = [&](auto change) {
         Settings changed = s;
         change(changed);
-        render(scene, changed, &stats);
-        const bool reused = stats.shadowMapReused;
+        const bool reused = firstFrame(scene, changed).shadowMapReused;
         settled(scene, s);  // back to the base view (and its map)
         return reused;
     };
@@ -124,8 +128,35 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     box.world = glm::translate(box.world, glm::dvec3(0.5, 0.0, 0.0));
     box.worldBounds = scene.meshes[1].primitives[0].bounds.transformed(box.world);
     renderer_->updateInstances(scene);
-    render(scene, s, &stats);
-    EXPECT_FALSE(stats.shadowMapReused);
+    EXPECT_FALSE(firstFrame(scene, s).shadowMapReused);
+}
+
+TEST_F(FrameSkips, VisibleDepthArrivesOneFrameLateAndIsKeptWhileTheViewStays) {
+    const Scene scene = planeBoxScene();
+    Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
+    s.method = ShadowMethod::Psm;  // auto near on
+    render(scene, s);              // creates renderer and target
+    Settings other = s;
+    other.camera.yawDeg += 40.0;  // a cut
+    FrameStats f = firstFrame(scene, other);
+    EXPECT_EQ(f.visibleDepth, VisibleDepthSource::Fallback);
+    EXPECT_TRUE(f.needsAnotherFrame);
+    EXPECT_GT(f.depthPrePass.drawCalls, 0u);
+    f = firstFrame(scene, other);
+    EXPECT_EQ(f.visibleDepth, VisibleDepthSource::Cached);  // the readback of the frame before
+    EXPECT_FALSE(f.needsAnotherFrame);
+    EXPECT_EQ(f.depthPrePass.drawCalls, 0u);  // nothing changed: no pre-pass at all
+    other.camera.position.x += 0.05;           // a small move: last frame's range, widened
+    f = firstFrame(scene, other);
+    EXPECT_EQ(f.visibleDepth, VisibleDepthSource::PreviousFrame);
+    EXPECT_TRUE(f.needsAnotherFrame);
+    other.skip.asyncDepthReadback = false;
+    EXPECT_EQ(firstFrame(scene, other).visibleDepth, VisibleDepthSource::Measured);
+    other.psm.autoNear = false;
+    f = firstFrame(scene, other);
+    EXPECT_EQ(f.visibleDepth, VisibleDepthSource::NotNeeded);
+    EXPECT_EQ(f.depthPrePass.drawCalls, 0u);
+    EXPECT_FALSE(f.needsAnotherFrame);
 }
 
 TEST_F(FrameSkips, StatsJsonCarriesTheFiguresOfTheFrame) {

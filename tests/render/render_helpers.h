@@ -81,7 +81,8 @@ protected:
             scene_ = &scene;
         }
         if (!target_) target_ = std::make_unique<RenderTarget>(kWidth, kHeight);
-        FrameStats s = renderer_->render(scene, settings, 0.0, Viewport{target_->framebuffer(), 0, 0, kWidth, kHeight});
+        FrameStats s =
+            renderer_->renderSettled(scene, settings, 0.0, Viewport{target_->framebuffer(), 0, 0, kWidth, kHeight});
         if (stats) *stats = s;
         RgbaImage image = target_->readColor();
         // SHADOWLAB_TEST_IMAGES=DIR keeps every rendered image for a look (debugging aid).
