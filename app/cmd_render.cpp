@@ -3,7 +3,7 @@
 #include "gl/debug_output.h"
 #include "headless_context.h"
 #include "render_target.h"
-#include "aliasing_stats.h"
+#include "accuracy.h"
 #include "renderer.h"
 #include "scenes/animation.h"
 #include "view_setup.h"
@@ -27,6 +27,7 @@ struct RenderOptions {
     int height = 720;
     bool measure = false;
     std::string statsFile;  // --stats: the frame's figures as JSON
+    bool truth = false;
     SettingsOverrides overrides;
 };
 
@@ -35,10 +36,11 @@ struct RenderOptions {
     throw CLI::RuntimeError(code);
 }
 
-// Error against cost for one method: the perspective aliasing error over the visible receivers
-// (thesis 8.2.1) and the CPU time of a whole frame including the GPU's work (glFinish).
+// Error against cost for one method: the frame time including the GPU's work (glFinish), the
+// texel footprint (thesis 8.2.1) over the lit-facing receivers, and with --truth the shadow
+// state against Embree rays (app/accuracy.h).
 void measureMethod(Renderer& renderer, const Scene& scene, const Settings& settings, const RenderTarget& target,
-                   bool header) {
+                   const RayScene* rays, bool header) {
     const Viewport viewport{target.framebuffer(), 0, 0, target.width(), target.height()};
     using Clock = std::chrono::steady_clock;
     constexpr int kFrames = 3;
@@ -46,15 +48,20 @@ void measureMethod(Renderer& renderer, const Scene& scene, const Settings& setti
     for (int f = 0; f < kFrames; ++f) renderer.render(scene, settings, settings.animation.time, viewport);
     glFinish();
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count() / kFrames;
-    Settings raw = settings;
-    raw.viewMode = ViewMode::AliasingErrorRaw;
-    FrameStats stats = renderer.render(scene, raw, settings.animation.time, viewport);
-    const AliasingStats a = aliasingStats(target.readColor());
+    const MeasureFrame frame = measureView(renderer, scene, settings, target.width(), target.height());
+    const AccuracyReport a = analyseFrame(frame, rays, truthLight(scene, settings, settings.animation.time));
     if (header)
-        std::cout << "method          frame ms   measured px   pixels/texel: median     p95     max   undersampled\n";
-    std::printf("%-14s %9.2f %13zu %22.3f %7.3f %7.2f %13.1f%%\n", methodName(settings.method), frameMs,
-                a.measuredPixels, a.median, a.p95, a.max, 100.0 * a.undersampledFraction);
-    (void)stats;
+        std::cout << "method        frame ms  measured px   pixels/texel: mean  median     p95     p99      max  "
+                     "undersampled  bisector p99  p99/limit"
+                  << (rays ? "  E_total  false shadow  false light  E_edge" : "") << "\n";
+    std::printf("%-12s %9.2f %12zu %19.3f %7.3f %7.3f %7.3f %8.2f %12.1f%% %13.3f %10.2f", methodName(settings.method),
+                frameMs, a.footprint.measuredPixels, a.footprint.mean, a.footprint.median, a.footprint.p95,
+                a.footprint.p99, a.footprint.max, 100.0 * a.footprint.undersampledFraction, a.bisector.p99,
+                a.distanceToLimit);
+    if (a.truth)
+        std::printf("  %6.2f%% %12.2f%% %11.2f%% %7.3f", 100.0 * a.truth->eTotal, 100.0 * a.truth->falseShadow,
+                    100.0 * a.truth->falseLight, a.truth->eEdge);
+    std::printf("\n");
 }
 
 // The figures of the frame just rendered (the first method's), GPU times included.
@@ -84,6 +91,13 @@ void runRender(const RenderOptions& options) {
     // The view's time poses glTF animations exactly as the viewer showed them.
     animateScene(*scene, settings.animation.time);
     renderer->setScene(*scene);
+    std::unique_ptr<RayScene> rays;
+    if (options.truth) {
+        rays = RayScene::build(*scene, error);
+        if (!rays) fail(error);
+        std::cout << "ground truth: " << rays->triangleCount() << " triangles, BVH built in " << rays->buildSeconds()
+                  << " s\n";
+    }
 
     const bool all = options.overrides.method == "all";
     const std::vector<ShadowMethod> methods =
@@ -104,7 +118,7 @@ void runRender(const RenderOptions& options) {
         if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
         image.blit(part, options.width * int(i), 0);
         if (!options.statsFile.empty() && i == 0) writeStats(*renderer, options.statsFile);
-        if (options.measure) measureMethod(*renderer, *scene, view, target, i == 0);
+        if (options.measure) measureMethod(*renderer, *scene, view, target, rays.get(), i == 0);
     }
     if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
     if (!writePng(image, options.out, error)) fail(error);
@@ -130,6 +144,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_flag("--measure", options->measure,
                   "print, per method, the frame time and the perspective aliasing error (screen pixels per "
                   "shadow-map texel, thesis 8.2.1) over the visible receivers");
+    cmd->add_flag("--truth", options->truth,
+                  "with --measure: compare the shadow state with exact visibility (Embree rays): E_total, false "
+                  "shadow, false light, E_edge");
     cmd->callback([options] { runRender(*options); });
 }
 
