@@ -12,6 +12,7 @@ void addInfoCommand(CLI::App& app);      // shadowlab info SCENE
 void addRenderCommand(CLI::App& app);    // shadowlab render SCENE --out FILE.png
 void addStressCommand(CLI::App& app);    // shadowlab stress --cases N --seed S
 void addGenerateCommand(CLI::App& app);  // shadowlab generate NAME --out FILE.glb
+void addBenchCommand(CLI::App& app);     // shadowlab bench SPEC.json|--quick --out DIR
 // The viewer is the top-level command (`shadowlab [SCENE]`); it runs when no sub-command is given.
 void addViewerOptions(CLI::App& app);
 

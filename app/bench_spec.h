@@ -1,0 +1,63 @@
+#pragma once
+// The permutation spec of `shadowlab bench` (JSON): scenes x cameras x methods x map sizes x
+// settings variants, plus the image size and how often each case is timed. Parsed and validated
+// here (unknown keys, wrong types and out-of-range values are errors with the key's path), so a
+// bad spec fails before anything is loaded.
+//
+//   {
+//     "width": 1280, "height": 720, "warmup": 2, "repeats": 5,
+//     "groundTruth": true, "temporal": true, "canonical": true,
+//     "scenes": [ { "file": "Sponza/Sponza.gltf", "cameras": ["CameraMain", 1, "views/hall.json"] } ],
+//     "methods": ["ssm", "psm", "lispsm"],
+//     "mapSizes": [1024, 2048],
+//     "variants": [ { "name": "slope + pcf2x2", "set": ["bias.mode=slope", "filter.filter=pcf2x2"] } ]
+//   }
+// Scene files and view files are relative to the spec's folder. A camera is a scene camera's name,
+// its index (0-based), or a view JSON file (a path ending in .json: the whole settings state).
+#include "settings/settings.h"
+
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace shadowlab::app {
+
+struct BenchCamera {
+    std::string name;    // scene camera name, or the view file
+    int index = -1;      // scene camera index when given as a number
+    bool viewFile = false;
+};
+
+struct BenchScene {
+    std::string file;  // resolved against the spec's folder
+    std::vector<BenchCamera> cameras;  // empty = the scene's first camera
+};
+
+struct BenchVariant {
+    std::string name = "default";
+    std::vector<std::string> sets;  // --set style key=value
+};
+
+struct BenchSpec {
+    int width = 1280, height = 720;
+    int warmup = 2, repeats = 5;
+    bool groundTruth = true;
+    bool temporal = true;
+    bool canonical = true;  // run the canonical validation (thesis 8.2 closed forms) once
+    std::vector<BenchScene> scenes;
+    std::vector<ShadowMethod> methods{ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm};
+    std::vector<int> mapSizes{2048};
+    std::vector<BenchVariant> variants{BenchVariant{}};
+
+    std::size_t caseCount() const;
+};
+
+// `folder` resolves relative scene and view paths. false with `error` naming the bad key.
+bool parseBenchSpec(const std::string& jsonText, const std::string& folder, BenchSpec& spec, std::string& error);
+
+// The built-in --quick spec: the generated forest's side-sun and sun-behind views and, when the
+// shared scenes are there, Sponza's CameraMain; 640 x 360, SSM/PSM/LiSPSM at 1024^2 and 2048^2.
+// Minutes on two cores without a GPU.
+BenchSpec quickBenchSpec(const std::string& forestFile, const std::string& sponzaFile);
+
+}  // namespace shadowlab::app
