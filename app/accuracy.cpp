@@ -48,7 +48,10 @@ ShadowLight truthLight(const Scene& scene, const Settings& settings, double seco
 MeasureFrame measureView(Renderer& renderer, const Scene& scene, const Settings& settings, int width, int height) {
     RenderTarget target(width, height);
     MeasureFrame frame;
-    renderer.renderMeasured(scene, settings, settings.animation.time, Viewport{target.framebuffer(), 0, 0, width, height},
+    // The measured frame is set up from its own visible depth, not the previous frame's.
+    Settings exact = settings;
+    exact.skip.asyncDepthReadback = false;
+    renderer.renderMeasured(scene, exact, exact.animation.time, Viewport{target.framebuffer(), 0, 0, width, height},
                             frame);
     return frame;
 }

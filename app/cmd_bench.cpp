@@ -170,6 +170,9 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                         settings.method = method;
                         settings.shadowMapSize = mapSize;
                         settings.viewMode = ViewMode::Lit;
+                        // Every timed frame renders its shadow map: with a still camera the map
+                        // would otherwise be reused and the shadow pass would time nothing.
+                        settings.skip.reuseShadowMap = false;
                         sanitize(settings);
                         timeCase(renderer, *scene, settings, target, spec.warmup, spec.repeats, c);
                         const MeasureFrame frame = measureView(renderer, *scene, settings, spec.width, spec.height);

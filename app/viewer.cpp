@@ -21,6 +21,7 @@
 #include "stats_panel.h"
 #include "view_setup.h"
 #include "view_state.h"
+#include "viewer_accuracy.h"
 #include "viewer_frame.h"
 #include "viewer_window.h"
 
@@ -103,6 +104,7 @@ struct ViewerState {
     DragTracker drag;
     double scroll = 0.0;
     std::unique_ptr<SceneLoadJob> load;
+    ViewerAccuracy accuracy;  // the accuracy panel (app/viewer_accuracy.h)
     bool initialLoad = true;  // the scene of the command line (its settings take the overrides)
     bool uploadNext = false;  // a finished load is uploaded next frame, after its "uploading" frame
 };
@@ -180,6 +182,7 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
     animateScene(scene, state.settings.animation.time);
     state.posedTime = state.settings.animation.time;
     renderer.setScene(scene);
+    forgetScene(state.accuracy);
     state.status.sceneName = file;
     state.status.sceneTriangles = scene.triangleCount();
     state.status.lastMessage = "opened " + file;
@@ -272,7 +275,8 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     // the renderer's depth pre-pass), for the LiSPSM panel's slider.
     static const Scene kNoScene{};
     ui::ControlContext ctx{&state.stats,    state.scene ? &*state.scene : &kNoScene, state.animation,
-                           state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file};
+                           state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file,
+                           &state.accuracy.view, &state.accuracy.groundTruth};
     const ui::ControlResult controls = ui::drawControlWindow(state.settings, ctx, float(fbWidth), float(fbHeight));
     if (controls.changed) addNotices(state.status, sanitize(state.settings));
     if (controls.requests.save) {
@@ -285,6 +289,7 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     }
     if (!controls.openFile.empty()) openFile(state, controls.openFile);
     if (controls.requests.screenshot) state.screenshotRequested = true;
+    if (controls.accuracy.measure) state.accuracy.requested = true;
 }
 
 void saveScreenshot(ViewerState& state, const std::string& file, int fbWidth, int fbHeight) {
@@ -422,6 +427,9 @@ void runViewer(const ViewerOptions& options) {
             views = drawViews({*renderer, *overlays, sectionTimer}, *state.scene, state.settings, layout,
                               state.observer);
             state.stats = views.stats;
+            if (std::exchange(state.accuracy.requested, false))
+                measureForPanel(state.accuracy, *renderer, *state.scene, state.settings, layout.views[0].width,
+                                layout.views[0].height);
         } else {
             const GLfloat clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
             glClearBufferfv(GL_COLOR, 0, clear);

@@ -1,5 +1,6 @@
 // The control window: every panel as a collapsing section at the right edge, the view-state
 // panel and the captions over the 3D image. ImGui only.
+#include "accuracy_panel.h"
 #include "file_panel.h"
 #include "panels.h"
 #include "skip_panel.h"
@@ -79,6 +80,8 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
         result.changed |= drawOverlayPanel(s, ctx.observer ? *ctx.observer : localObserver);
     if (ImGui::CollapsingHeader("Split compare")) result.changed |= drawComparePanel(s);
     if (ImGui::CollapsingHeader("Skips")) result.changed |= drawSkipPanel(s);
+    if (ctx.accuracy && ctx.accuracyGroundTruth && ImGui::CollapsingHeader("Accuracy"))
+        result.accuracy = drawAccuracyPanel(*ctx.accuracy, *ctx.accuracyGroundTruth);
     if (ImGui::CollapsingHeader("View state", ImGuiTreeNodeFlags_DefaultOpen))
         result.requests = drawViewStatePanel(ctx.viewState ? *ctx.viewState : localViewState);
     if (result.requests.load) result.openFile = (ctx.viewState ? *ctx.viewState : localViewState).file;

@@ -64,6 +64,10 @@ struct ViewStateUi {
 ViewStateRequests drawViewStatePanel(ViewStateUi& ui);
 
 struct FileUi;
+struct AccuracyView;
+struct AccuracyRequest {
+    bool measure = false;
+};
 
 // Everything the control window shows besides Settings.
 struct ControlContext {
@@ -74,10 +78,13 @@ struct ControlContext {
     ObserverView* observer = nullptr;
     ViewStateUi* viewState = nullptr;
     FileUi* file = nullptr;
+    const AccuracyView* accuracy = nullptr;  // the accuracy panel's figures (ui/accuracy_panel.h)
+    bool* accuracyGroundTruth = nullptr;
 };
 struct ControlResult {
     bool changed = false;
     ViewStateRequests requests;
+    AccuracyRequest accuracy;  // "measure this view"
     std::string openFile;  // File > Open, a recent file, or "load view": the viewer opens it by its kind
 };
 // The control window (right edge of a `width` x `height` framebuffer): every panel above as a

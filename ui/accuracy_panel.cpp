@@ -1,0 +1,167 @@
+#include "accuracy_panel.h"
+
+#include "widgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+
+namespace shadowlab::ui {
+
+namespace {
+
+ImU32 methodColour(ShadowMethod m, int alpha = 255) {
+    switch (m) {
+        case ShadowMethod::Psm: return IM_COL32(255, 150, 40, alpha);
+        case ShadowMethod::Lispsm: return IM_COL32(60, 200, 90, alpha);
+        case ShadowMethod::SsmUnfocused: return IM_COL32(160, 160, 160, alpha);
+        default: return IM_COL32(70, 140, 255, alpha);
+    }
+}
+
+// Footprint against eye depth, log-log, with ImDrawList lines (measured: thick, theory: thin).
+void drawDepthPlot(const std::vector<AccuracyCurve>& curves) {
+    float zLo = INFINITY, zHi = 0.0f, fLo = INFINITY, fHi = 0.0f;
+    for (const AccuracyCurve& c : curves)
+        for (std::size_t i = 0; i < c.z.size() && i < c.footprint.size(); ++i) {
+            if (!(c.z[i] > 0.0f) || !(c.footprint[i] > 0.0f)) continue;
+            zLo = std::min(zLo, c.z[i]);
+            zHi = std::max(zHi, c.z[i]);
+            fLo = std::min(fLo, c.footprint[i]);
+            fHi = std::max(fHi, c.footprint[i]);
+        }
+    if (!(zHi > zLo) || !(fHi > 0.0f)) {
+        ImGui::TextDisabled("no depth range measured");
+        return;
+    }
+    fLo = std::max(fLo, fHi * 1e-4f);
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, 170.0f);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(25, 25, 30, 255));
+    const float lzLo = std::log(zLo), lzHi = std::log(zHi), lfLo = std::log(fLo), lfHi = std::log(fHi * 1.05f);
+    auto at = [&](float z, float f) {
+        const float x = (std::log(z) - lzLo) / (lzHi - lzLo), y = (std::log(std::max(f, fLo)) - lfLo) / (lfHi - lfLo);
+        return ImVec2(origin.x + 4.0f + x * (size.x - 8.0f), origin.y + size.y - 4.0f - y * (size.y - 8.0f));
+    };
+    // Grid: one line per power of ten in footprint, the footprint 1 line brighter.
+    for (int e = int(std::floor(std::log10(fLo))); e <= int(std::ceil(std::log10(fHi))); ++e) {
+        const float f = std::pow(10.0f, float(e));
+        if (f < fLo || f > fHi * 1.05f) continue;
+        const ImVec2 p = at(zLo, f);
+        draw->AddLine(p, ImVec2(origin.x + size.x, p.y), e == 0 ? IM_COL32(200, 200, 200, 120) : IM_COL32(90, 90, 90, 90));
+        char label[16];
+        std::snprintf(label, sizeof label, "%g", f);
+        draw->AddText(ImVec2(p.x, p.y - 13.0f), IM_COL32(160, 160, 160, 255), label);
+    }
+    for (const AccuracyCurve& c : curves) {
+        std::vector<ImVec2> points;
+        for (std::size_t i = 0; i < c.z.size() && i < c.footprint.size(); ++i)
+            if (c.z[i] > 0.0f && c.footprint[i] > 0.0f) points.push_back(at(c.z[i], c.footprint[i]));
+        if (points.size() >= 2)
+            draw->AddPolyline(points.data(), int(points.size()), methodColour(c.method, c.theory ? 150 : 255), 0,
+                              c.theory ? 1.0f : 2.5f);
+    }
+    char range[64];
+    std::snprintf(range, sizeof range, "z %.3g .. %.3g m (log)", zLo, zHi);
+    draw->AddText(ImVec2(origin.x + 6.0f, origin.y + size.y - 16.0f), IM_COL32(160, 160, 160, 255), range);
+    ImGui::Dummy(size);
+    for (const AccuracyCurve& c : curves) {
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(c.method, c.theory ? 150 : 255)), "%s %s",
+                           c.theory ? "--" : "==", c.label.c_str());
+    }
+}
+
+void drawFigures(const std::vector<AccuracyFigures>& methods) {
+    if (!ImGui::BeginTable("accuracy figures", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
+    ImGui::TableSetupColumn("");
+    for (const AccuracyFigures& m : methods) ImGui::TableSetupColumn(methodName(m.method));
+    ImGui::TableHeadersRow();
+    auto row = [&](const char* name, const char* tooltip, auto value, const char* format) {
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextUnformatted(name);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+        for (std::size_t i = 0; i < methods.size() && i < 3; ++i) {
+            ImGui::TableSetColumnIndex(int(i) + 1);
+            ImGui::Text(format, value(methods[i]));
+        }
+    };
+    row("median", "texel footprint: screen pixels per shadow-map texel (thesis eq. 8.1), lit-facing receivers",
+        [](const AccuracyFigures& m) { return m.median; }, "%.3f");
+    row("p99", "99th percentile of the footprint", [](const AccuracyFigures& m) { return m.p99; }, "%.3f");
+    row("p99 bisector", "p99 with the bisector normal: perspective aliasing only (thesis 3.1 vs 3.2)",
+        [](const AccuracyFigures& m) { return m.bisectorP99; }, "%.3f");
+    row("p99 / limit", "p99 over m* = K ln(z_max/z_min): how far from what any single map this size can do",
+        [](const AccuracyFigures& m) { return m.distanceToLimit; }, "%.2f");
+    row("undersampled %", "pixels where one texel covers more than one pixel",
+        [](const AccuracyFigures& m) { return 100.0 * m.undersampled; }, "%.1f");
+    if (std::any_of(methods.begin(), methods.end(), [](const AccuracyFigures& m) { return m.hasTruth; })) {
+        row("E_total %", "receivers whose shadow state (PCF >= 0.5) differs from Embree's exact visibility",
+            [](const AccuracyFigures& m) { return 100.0 * m.eTotal; }, "%.2f");
+        row("false shadow %", "truth lit, rendered dark: acne, over-darkening",
+            [](const AccuracyFigures& m) { return 100.0 * m.falseShadow; }, "%.2f");
+        row("false light %", "truth dark, rendered lit: leaks, peter-panning",
+            [](const AccuracyFigures& m) { return 100.0 * m.falseLight; }, "%.2f");
+        row("E_edge", "mismatches per truth-boundary pixel", [](const AccuracyFigures& m) { return m.eEdge; }, "%.3f");
+    }
+    ImGui::EndTable();
+}
+
+}  // namespace
+
+void drawHeatLegend() {
+    // shaders/aliasing_error.glsl: log2(footprint) over [-4, 4], blue .. green (1) .. red.
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float width = ImGui::GetContentRegionAvail().x, height = 14.0f;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    constexpr int kSteps = 32;
+    for (int i = 0; i < kSteps; ++i) {
+        const float t = (float(i) + 0.5f) / kSteps * 2.0f - 1.0f;
+        const ImVec4 green(0.1f, 0.8f, 0.1f, 1.0f), far = t < 0.0f ? ImVec4(0.1f, 0.2f, 1.0f, 1.0f) : ImVec4(1.0f, 0.1f, 0.05f, 1.0f);
+        const float a = std::abs(t);
+        const ImVec4 c(green.x + (far.x - green.x) * a, green.y + (far.y - green.y) * a, green.z + (far.z - green.z) * a, 1.0f);
+        draw->AddRectFilled(ImVec2(origin.x + width * i / kSteps, origin.y),
+                            ImVec2(origin.x + width * (i + 1) / kSteps, origin.y + height),
+                            ImGui::ColorConvertFloat4ToU32(c));
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    ImGui::TextUnformatted("1/16       1/4        1         4        16+");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Screen pixels per shadow-map texel. Green: one texel per pixel. Red: a texel spans many "
+                          "pixels (undersampled, jagged edges). Blue: texels wasted where no pixel needs them.");
+}
+
+AccuracyRequest drawAccuracyPanel(const AccuracyView& view, bool& groundTruth) {
+    AccuracyRequest request;
+    request.measure = ImGui::Button("measure this view");
+    ImGui::SameLine();
+    checkbox("ground truth", groundTruth,
+             "Also cast one Embree ray per receiver pixel toward the light (exact visibility) and compare the rendered "
+             "shadow state: E_total, false shadow / light, E_edge. The BVH is built once per scene.");
+    if (!view.status.empty()) ImGui::TextWrapped("%s", view.status.c_str());
+    ImGui::TextUnformatted("heat map legend (view mode: aliasing error)");
+    drawHeatLegend();
+    if (!view.measured) return request;
+    drawFigures(view.methods);
+    ImGui::TextUnformatted("footprint (bisector normal) against eye depth");
+    drawDepthPlot(view.curves);
+    if (!view.histogram.empty()) {
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "log2 footprint %.0f .. %.0f", view.histogramLog2Low, view.histogramLog2High);
+        ImGui::PlotHistogram("##histogram", view.histogram.data(), int(view.histogram.size()), 0, overlay, 0.0f, FLT_MAX,
+                             ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
+    }
+    if (view.mismatchTexture != 0 && view.mismatchWidth > 0) {
+        ImGui::TextUnformatted("mismatches: red false shadow, blue false light");
+        const float w = ImGui::GetContentRegionAvail().x;
+        ImGui::Image(reinterpret_cast<ImTextureID>(view.mismatchTexture),
+                     ImVec2(w, w * float(view.mismatchHeight) / float(view.mismatchWidth)));
+    }
+    return request;
+}
+
+}  // namespace shadowlab::ui
