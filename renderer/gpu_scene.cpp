@@ -13,7 +13,8 @@ struct Vertex {
     glm::vec2 texcoord;
 };
 
-// Per-instance attributes: world matrix and the normal matrix (inverse transpose), 3 vec4 columns.
+// InstanceData of shaders/scene_vertex.glsl (std430): world matrix and the normal matrix (inverse
+// transpose) as 3 vec4 columns.
 struct InstanceData {
     glm::mat4 world;
     glm::vec4 normalColumns[3];
@@ -26,6 +27,13 @@ InstanceData instanceData(const MeshInstance& instance) {
     for (int c = 0; c < 3; ++c) d.normalColumns[c] = glm::vec4(normalMatrix[c], 0.0f);
     return d;
 }
+
+// MaterialData of shaders/material.glsl (std430).
+struct MaterialData {
+    glm::vec4 baseColorFactor;
+    glm::vec4 emissiveAndCutoff;
+    glm::ivec4 modeAndTexture;
+};
 
 bool mipmapped(int minFilter) { return minFilter >= 9984 && minFilter <= 9987; }
 
@@ -76,9 +84,16 @@ GpuScene::GpuScene(const Scene& scene) {
     glNamedBufferStorage(indices_.id(), GLsizeiptr(std::max<std::size_t>(1, indices.size()) * sizeof(std::uint32_t)),
                          indices.empty() ? nullptr : indices.data(), 0);
     instanceData_ = gl::createBuffer();
-    glNamedBufferStorage(instanceData_.id(), GLsizeiptr(std::max<GLuint>(1, slot) * sizeof(InstanceData)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(instanceData_.id(), GLsizeiptr(std::max<std::size_t>(1, scene.instances.size()) * sizeof(InstanceData)),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
     updateInstances(scene);
+    std::vector<std::uint32_t> slotInstances;
+    for (const GpuMesh& mesh : meshes_)
+        for (int inst : mesh.instances) slotInstances.push_back(std::uint32_t(inst));
+    slotInstances_ = gl::createBuffer();
+    glNamedBufferStorage(slotInstances_.id(), GLsizeiptr(std::max<std::size_t>(1, slotInstances.size()) * 4),
+                         slotInstances.empty() ? nullptr : slotInstances.data(), 0);
+    drawList_ = gl::createBuffer();
 
     vao_ = gl::createVertexArray();
     const GLuint vao = vao_.id();
@@ -91,13 +106,11 @@ GpuScene::GpuScene(const Scene& scene) {
         glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao, a, 0);
     }
-    glVertexArrayVertexBuffer(vao, 1, instanceData_.id(), 0, sizeof(InstanceData));
+    glVertexArrayVertexBuffer(vao, 1, slotInstances_.id(), 0, sizeof(std::uint32_t));
     glVertexArrayBindingDivisor(vao, 1, 1);
-    for (GLuint a = 0; a < 7; ++a) {  // 4 world columns + 3 normal-matrix columns
-        glEnableVertexArrayAttrib(vao, 3 + a);
-        glVertexArrayAttribFormat(vao, 3 + a, a < 4 ? 4 : 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
-        glVertexArrayAttribBinding(vao, 3 + a, 1);
-    }
+    glEnableVertexArrayAttrib(vao, 3);
+    glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao, 3, 1);
 
     for (const Texture& t : scene.textures) {
         gl::Texture tex = gl::createTexture(GL_TEXTURE_2D);
@@ -124,14 +137,74 @@ GpuScene::GpuScene(const Scene& scene) {
         glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, validWrap(t.sampler.wrapT));
         samplers_.push_back(std::move(sampler));
     }
+    uploadMaterials(scene);
+}
+
+void GpuScene::uploadMaterials(const Scene& scene) {
+    // One entry per scene material plus the default material (-1) at the end.
+    std::vector<MaterialData> data;
+    materials_.clear();
+    const Material kDefault{};
+    for (std::size_t i = 0; i <= scene.materials.size(); ++i) {
+        const Material& m = i < scene.materials.size() ? scene.materials[i] : kDefault;
+        GpuMaterial g;
+        g.slot = int(i);
+        g.texture = texture(m.baseColorTexture);
+        g.sampler = sampler(m.baseColorTexture);
+        g.textured = g.texture != 0;
+        g.alphaTest = m.alphaMode == AlphaMode::Mask;
+        g.blended = m.alphaMode == AlphaMode::Blend;
+        g.doubleSided = m.doubleSided;
+        materials_.push_back(g);
+        data.push_back({m.baseColorFactor, glm::vec4(m.emissiveFactor, m.alphaCutoff),
+                        glm::ivec4(int(m.alphaMode), g.textured ? 1 : 0, 0, 0)});
+    }
+    materialData_ = gl::createBuffer();
+    glNamedBufferStorage(materialData_.id(), GLsizeiptr(data.size() * sizeof(MaterialData)), data.data(), 0);
 }
 
 void GpuScene::updateInstances(const Scene& scene) {
     std::vector<InstanceData> data;
-    for (const GpuMesh& mesh : meshes_)
-        for (int inst : mesh.instances) data.push_back(instanceData(scene.instances[inst]));
+    data.reserve(scene.instances.size());
+    for (const MeshInstance& inst : scene.instances) data.push_back(instanceData(inst));
     if (!data.empty())
         glNamedBufferSubData(instanceData_.id(), 0, GLsizeiptr(data.size() * sizeof(InstanceData)), data.data());
+}
+
+void GpuScene::bindVertexArray() const {
+    glBindVertexArray(vao_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, instanceData_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, materialData_.id());
+}
+
+std::vector<DrawGroup> GpuScene::bindDrawList(const Scene& scene, const InstanceList& instances) {
+    // Counting sort by (mesh, winding): stable, so each group keeps ascending instance order.
+    const std::size_t keys = meshes_.size() * 2;
+    groupCounts_.assign(keys + 1, 0);
+    auto keyOf = [&](std::uint32_t i) {
+        const MeshInstance& inst = scene.instances[i];
+        return std::size_t(inst.mesh) * 2 + (inst.mirrored ? 1 : 0);
+    };
+    for (std::uint32_t i : instances)
+        if (scene.instances[i].mesh >= 0 && std::size_t(scene.instances[i].mesh) < meshes_.size()) ++groupCounts_[keyOf(i) + 1];
+    for (std::size_t k = 1; k <= keys; ++k) groupCounts_[k] += groupCounts_[k - 1];
+    std::vector<DrawGroup> groups;
+    for (std::size_t k = 0; k < keys; ++k)
+        if (groupCounts_[k + 1] > groupCounts_[k])
+            groups.push_back({int(k / 2), (k % 2) == 1, groupCounts_[k], GLsizei(groupCounts_[k + 1] - groupCounts_[k])});
+    std::vector<std::uint32_t> list(groupCounts_[keys]);
+    for (std::uint32_t i : instances)
+        if (scene.instances[i].mesh >= 0 && std::size_t(scene.instances[i].mesh) < meshes_.size())
+            list[groupCounts_[keyOf(i)]++] = i;
+    if (list.empty()) return groups;
+    // Re-specified storage per pass: draws already issued keep reading the previous list.
+    glNamedBufferData(drawList_.id(), GLsizeiptr(list.size() * sizeof(std::uint32_t)), list.data(), GL_STREAM_DRAW);
+    glVertexArrayVertexBuffer(vao_.id(), 1, drawList_.id(), 0, sizeof(std::uint32_t));
+    return groups;
+}
+
+void GpuScene::restoreSlotOrder() const {
+    glVertexArrayVertexBuffer(vao_.id(), 1, slotInstances_.id(), 0, sizeof(std::uint32_t));
 }
 
 }  // namespace shadowlab

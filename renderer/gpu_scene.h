@@ -1,7 +1,11 @@
 #pragma once
 // The scene's geometry, instances, materials and textures on the GPU, uploaded once per scene.
-// Instances are grouped by mesh so every primitive is drawn with one instanced call per run of
-// visible instances (baseInstance selects the instance matrices).
+// Instance matrices and materials live in storage buffers (shaders/scene_vertex.glsl,
+// material.glsl) indexed by Scene order; an instanced vertex attribute carries the instance index.
+// It comes from one of two lists: the fixed slot order (instances grouped by mesh, so a run of
+// consecutive slots is one instanced call), or a pass's culled draw list, grouped by mesh and
+// winding so each primitive is one instanced call per pass (skip.groupedDraws).
+#include "culling/instance_culling.h"
 #include "gl/gl_objects.h"
 #include "scenes/scene.h"
 
@@ -26,6 +30,25 @@ struct GpuMesh {
 // Which instances a pass draws (culling result), one flag per Scene::instances entry.
 using InstanceMask = std::vector<std::uint8_t>;
 
+// What a draw needs to know about its material: the storage-buffer entry, the texture to bind and
+// which shader variant applies.
+struct GpuMaterial {
+    int slot = 0;  // entry in the material buffer (the default material is the last one)
+    GLuint texture = 0, sampler = 0;
+    bool textured = false;
+    bool alphaTest = false;  // glTF MASK
+    bool blended = false;    // glTF BLEND
+    bool doubleSided = false;
+};
+
+// One instanced draw of every primitive of `mesh` over `count` entries of the uploaded draw list.
+struct DrawGroup {
+    int mesh = 0;
+    bool mirrored = false;
+    GLuint first = 0;
+    GLsizei count = 0;
+};
+
 class GpuScene {
 public:
     explicit GpuScene(const Scene& scene);
@@ -33,7 +56,15 @@ public:
     // Re-uploads the instance matrices after the node transforms changed (animation).
     void updateInstances(const Scene& scene);
 
-    void bindVertexArray() const { glBindVertexArray(vao_.id()); }
+    // Binds the vertex array (slot order) and the instance and material buffers.
+    void bindVertexArray() const;
+    const GpuMaterial& material(int index) const {
+        return index >= 0 && index + 1 < int(materials_.size()) ? materials_[std::size_t(index)] : materials_.back();
+    }
+    // Uploads the culled instances as a draw list grouped by mesh and winding (ascending instance
+    // order inside a group) and points the instance attribute at it; restoreSlotOrder() undoes that.
+    std::vector<DrawGroup> bindDrawList(const Scene& scene, const InstanceList& instances);
+    void restoreSlotOrder() const;
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
     GLuint texture(int index) const { return index >= 0 && index < int(textures_.size()) ? textures_[index].id() : 0; }
     GLuint sampler(int index) const { return index >= 0 && index < int(samplers_.size()) ? samplers_[index].id() : 0; }
@@ -60,10 +91,17 @@ public:
     }
 
 private:
+    void uploadMaterials(const Scene& scene);
+
     gl::VertexArray vao_;
     gl::Buffer vertices_;
     gl::Buffer indices_;
-    gl::Buffer instanceData_;
+    gl::Buffer instanceData_;   // storage buffer, Scene::instances order
+    gl::Buffer slotInstances_;  // slot -> instance index (the fixed, mesh-grouped order)
+    gl::Buffer drawList_;       // a pass's culled instance indices, re-specified per pass
+    gl::Buffer materialData_;   // storage buffer of MaterialData (material.glsl)
+    std::vector<GpuMaterial> materials_;
+    std::vector<GLuint> groupCounts_;  // scratch for bindDrawList
     std::vector<gl::Texture> textures_;
     std::vector<gl::SamplerObject> samplers_;
     std::vector<GpuMesh> meshes_;

@@ -144,20 +144,13 @@ void OverlayRenderer::drawScene(GLuint framebuffer, const InsetRect& rect, const
     scene_.set("uWorldToClip", glm::mat4(worldToClip));
     const double len = glm::length(lightDirection);
     scene_.set("uTowardsLight", glm::vec3(len > 0.0 ? -lightDirection / len : glm::dvec3(0, 1, 0)));
-    static const Material kDefault{};
+    const GLint materialLocation = scene_.location("uMaterial");
     gpu.bindVertexArray();
     gpu.forEachRun(scene, InstanceMask{}, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool) {
-        const Material& m = prim.material >= 0 && prim.material < int(scene.materials.size())
-                                ? scene.materials[std::size_t(prim.material)]
-                                : kDefault;
-        scene_.set("uBaseColorFactor", m.baseColorFactor);
-        const GLuint texture = gpu.texture(m.baseColorTexture);
-        scene_.set("uHasBaseColorTexture", texture != 0 ? 1 : 0);
-        glBindTextureUnit(0, texture);
-        glBindSampler(0, gpu.sampler(m.baseColorTexture));
-        scene_.set("uAlphaMode", int(m.alphaMode));
-        scene_.set("uAlphaCutoff", m.alphaCutoff);
-        scene_.set("uEmissive", m.emissiveFactor);
+        const GpuMaterial& m = gpu.material(prim.material);  // material.glsl: the entry of its buffer
+        glProgramUniform1i(scene_.id(), materialLocation, m.slot);
+        glBindTextureUnit(0, m.texture);
+        glBindSampler(0, m.sampler);
         glDrawElementsInstancedBaseVertexBaseInstance(
             GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
             reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,

@@ -49,11 +49,11 @@ bool Renderer::lightFacingIsCounterClockwise(const glm::dmat4& m, const LightFra
 
 std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     std::unique_ptr<Renderer> r(new Renderer());
-    auto forward = gl::Program::build("forward.vert", "forward.frag", "", error);
+    auto forward = MaterialPrograms::build("forward.vert", "forward.frag", "", error);
     if (!forward) return nullptr;
-    auto depth = gl::Program::build("shadow_depth.vert", "shadow_depth.frag", "", error);
+    auto depth = MaterialPrograms::build("shadow_depth.vert", "shadow_depth.frag", "", error);
     if (!depth) return nullptr;
-    auto depthLinear = gl::Program::build("shadow_depth.vert", "shadow_depth.frag", "#define LINEAR_DEPTH 1\n", error);
+    auto depthLinear = MaterialPrograms::build("shadow_depth.vert", "shadow_depth.frag", "#define LINEAR_DEPTH 1\n", error);
     if (!depthLinear) return nullptr;
     auto blur = gl::Program::build("fullscreen.vert", "blur.frag", "", error);
     if (!blur) return nullptr;
@@ -212,53 +212,6 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     return stats;
 }
 
-void Renderer::setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cull) const {
-    static const Material kDefault{};
-    const Material& m = materialIndex >= 0 && materialIndex < int(scene.materials.size())
-                            ? scene.materials[std::size_t(materialIndex)]
-                            : kDefault;
-    program.set("uBaseColorFactor", m.baseColorFactor);
-    const GLuint texture = gpuScene_->texture(m.baseColorTexture);
-    program.set("uHasBaseColorTexture", texture != 0 ? 1 : 0);
-    glBindTextureUnit(0, texture);
-    glBindSampler(0, gpuScene_->sampler(m.baseColorTexture));
-    program.set("uAlphaMode", int(m.alphaMode));
-    program.set("uAlphaCutoff", m.alphaCutoff);
-    program.set("uEmissive", m.emissiveFactor);
-    // Double-sided surfaces are drawn from both sides in every pass.
-    if (cull && !m.doubleSided) glEnable(GL_CULL_FACE);
-    else glDisable(GL_CULL_FACE);
-}
-
-void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances,
-                         bool cullFrontFaces, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
-    const Scene& scene = frame.scene;
-    if (instances.empty()) return;
-    InstanceMask mask(scene.instances.size(), 0);
-    for (std::uint32_t i : instances) mask[i] = 1;
-    gpuScene_->bindVertexArray();
-    glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
-    gpuScene_->forEachRun(scene, mask, [&](const GpuPrimitive& prim, GLuint firstSlot, GLsizei count, bool mirrored) {
-        if (surfaces != Surfaces::All) {
-            const bool blended = prim.material >= 0 && prim.material < int(scene.materials.size()) &&
-                                 scene.materials[std::size_t(prim.material)].alphaMode == AlphaMode::Blend;
-            if (blended != (surfaces == Surfaces::Blended)) return;
-        }
-        setMaterial(program, scene, prim.material, true);
-        // A negative-scale node flips the winding, and so does a mirroring target projection.
-        glFrontFace(mirrored != targetMirrored ? GL_CW : GL_CCW);
-        glDrawElementsInstancedBaseVertexBaseInstance(
-            GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
-            reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
-            prim.baseVertex, firstSlot);
-        ++counts.drawCalls;
-        counts.triangles += std::size_t(prim.indexCount / 3) * std::size_t(count);
-    });
-    glFrontFace(GL_CCW);
-    glCullFace(GL_BACK);
-    glDisable(GL_CULL_FACE);
-}
-
 VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
     DepthView view;
     view.view = frame.view;
@@ -268,9 +221,10 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.sceneLoad = sceneLoads_;
     view.sceneVersion = sceneVersion_;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
-        shadowDepth_.use();
-        shadowDepth_.set("uWorldToShadowClip", glm::mat4(viewProjection));
-        drawScene(shadowDepth_, frame, frame.visible, false, stats.depthPrePass);
+        const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
+            p.set("uWorldToShadowClip", glm::mat4(viewProjection));
+        });
+        drawScene(programs, frame, frame.visible, false, stats.depthPrePass);
     };
     const VisibleDepthRange range = visibleDepth_.range(view, frame.settings.skip.asyncDepthReadback, drawDepth, stats);
     unbindPassResources({0});
@@ -301,18 +255,19 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
         glPolygonOffset(sign * float(s.bias.slopeFactor), sign * float(s.bias.slopeUnits));
     }
 
-    const gl::Program& program = frame.linearDepth ? shadowDepthLinear_ : shadowDepth_;
-    program.use();
-    program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
     const bool slope = s.bias.mode == DepthOffset::SlopeScale;
-    program.set("uSlopeFactor", slope ? float(s.bias.slopeFactor) : 0.0f);
-    program.set("uSlopeUnits", slope ? float(s.bias.slopeUnits) : 0.0f);
-    program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
-    program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
-    program.set("uLinearAxis", glm::vec3(frame.linear.axis));
-    program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
+    auto setup = [&](const gl::Program& program) {
+        program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
+        program.set("uSlopeFactor", slope ? float(s.bias.slopeFactor) : 0.0f);
+        program.set("uSlopeUnits", slope ? float(s.bias.slopeUnits) : 0.0f);
+        program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
+        program.set("uLinearOrigin", glm::vec3(frame.linear.origin));
+        program.set("uLinearAxis", glm::vec3(frame.linear.axis));
+        program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
+    };
+    const ProgramFor programs = passPrograms(frame.linearDepth ? shadowDepthLinear_ : shadowDepth_, true, s, setup);
     // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
-    drawScene(program, frame, frame.casters, s.bias.backFaces, stats.shadowPass, Surfaces::All,
+    drawScene(programs, frame, frame.casters, s.bias.backFaces, stats.shadowPass, Surfaces::All,
               frame.shadowMapMirrored);
 
     glDisable(GL_POLYGON_OFFSET_FILL);
@@ -373,13 +328,13 @@ void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    const gl::Program& program = forward_;
-    program.use();
     Frame termFrame = frame;
     termFrame.viewport = Viewport{termTargets_.framebuffer(0), 0, 0, vp.width, vp.height};
-    setLightingUniforms(program, termFrame, false);
-    program.set("uOutputMode", 2);
-    drawScene(program, frame, frame.visible, false, stats.forwardPass);
+    const ProgramFor programs = passPrograms(forward_, false, frame.settings, [&](const gl::Program& program) {
+        setLightingUniforms(program, termFrame, false);
+        program.set("uOutputMode", 2);
+    });
+    drawScene(programs, frame, frame.visible, false, stats.forwardPass);
     glDisable(GL_DEPTH_TEST);
     unbindPassResources({0, 1});
     termTimer_.end();
@@ -439,28 +394,29 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 
-    const gl::Program& program = forward_;
-    program.use();
     const bool useBlurredTerm = frame.shadowed && termTargets_.allocated();
-    setLightingUniforms(program, frame, useBlurredTerm);
     if (useBlurredTerm) {
         glBindTextureUnit(2, termTargets_.term(0));
         glBindSampler(2, 0);
     }
     const ViewMode mode = frame.settings.viewMode;
-    program.set("uOutputMode", mode == ViewMode::ShadowTermOnly     ? 1
-                               : mode == ViewMode::AliasingError    ? 3
-                               : mode == ViewMode::AliasingErrorRaw ? 4
-                                                                    : 0);
+    const int outputMode = mode == ViewMode::ShadowTermOnly     ? 1
+                           : mode == ViewMode::AliasingError    ? 3
+                           : mode == ViewMode::AliasingErrorRaw ? 4
+                                                                : 0;
+    const ProgramFor programs = passPrograms(forward_, false, frame.settings, [&](const gl::Program& program) {
+        setLightingUniforms(program, frame, useBlurredTerm);
+        program.set("uOutputMode", outputMode);
+    });
     // Raw measurement values are written as they are, not sRGB-encoded.
     if (mode == ViewMode::AliasingErrorRaw) glDisable(GL_FRAMEBUFFER_SRGB);
 
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
-    drawScene(program, frame, frame.visible, false, stats.forwardPass, Surfaces::OpaqueAndMasked);
+    drawScene(programs, frame, frame.visible, false, stats.forwardPass, Surfaces::OpaqueAndMasked);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
-    drawScene(program, frame, frame.visible, false, stats.forwardPass, Surfaces::Blended);
+    drawScene(programs, frame, frame.visible, false, stats.forwardPass, Surfaces::Blended);
 
     // Restore what this pass changed.
     glDisable(GL_BLEND);

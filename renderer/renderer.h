@@ -11,10 +11,12 @@
 #include "gl/program.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
+#include "material_programs.h"
 #include "measure_pass.h"
 #include "shadow_resources.h"
 #include "visible_depth.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -82,14 +84,23 @@ private:
     void forwardPass(const Frame& frame, FrameStats& stats);
     void measurePass(const Frame& frame, FrameStats& stats);
     void setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const;
-    void setMaterial(const gl::Program& program, const Scene& scene, int materialIndex, bool cullBackFaces) const;
     enum class Surfaces { All, OpaqueAndMasked, Blended };
+    // The program of a material in this pass (scene_draw.cpp).
+    using ProgramFor = std::function<DrawProgram(const GpuMaterial&)>;
+    // The material variants of `programs` (skip.shaderVariants), each given the pass's uniforms by
+    // `setup` the first time a draw uses it.
+    static ProgramFor passPrograms(MaterialPrograms& programs, bool depthOnly, const Settings& settings,
+                                   std::function<void(const gl::Program&)> setup);
+    void drawScene(const ProgramFor& programFor, const Frame& frame, const InstanceList& instances,
+                   bool cullFrontFaces, PassCounts& counts, Surfaces surfaces = Surfaces::All,
+                   bool targetMirrored = false) const;
+    // Every material with the one `program` (the measurement pass).
     void drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances, bool cullFrontFaces,
                    PassCounts& counts, Surfaces surfaces = Surfaces::All, bool targetMirrored = false) const;
 
-    gl::Program forward_;
-    gl::Program shadowDepth_;        // hyperbolic depth (the warp's own)
-    gl::Program shadowDepthLinear_;  // linear light-space depth written per fragment
+    MaterialPrograms forward_;
+    MaterialPrograms shadowDepth_;        // hyperbolic depth (the warp's own)
+    MaterialPrograms shadowDepthLinear_;  // linear light-space depth written per fragment
     gl::Program blur_;
     gl::VertexArray emptyVao_;  // fullscreen triangles read no attributes
     std::unique_ptr<GpuScene> gpuScene_;

@@ -34,5 +34,5 @@ void main() {
         outColor = vec4(vec3(0.9) * (0.2 + 0.8 * shadow), 1.0);
         return;
     }
-    outColor = vec4(shade(albedo.rgb, vWorldPosition, n, shadow) + uEmissive, albedo.a);
+    outColor = vec4(shade(albedo.rgb, vWorldPosition, n, shadow) + materialEmissive(), albedo.a);
 }

@@ -8,9 +8,9 @@ out vec3 vWorldNormal;
 out vec2 vTexcoord;
 
 void main() {
-    vec4 world = inWorld * vec4(inPosition, 1.0);
+    vec4 world = instanceWorld() * vec4(inPosition, 1.0);
     vWorldPosition = world.xyz;
-    vWorldNormal = inNormalMatrix * inNormal;
+    vWorldNormal = instanceNormalMatrix() * inNormal;
     vTexcoord = inTexcoord;
     gl_Position = uViewProjection * world;
 }

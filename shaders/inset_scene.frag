@@ -15,5 +15,5 @@ void main() {
     alphaTest(albedo.a);
     vec3 n = normalize(vWorldNormal);
     float diffuse = abs(dot(n, uTowardsLight));
-    outColor = vec4(albedo.rgb * (0.35 + 0.65 * diffuse) + uEmissive, 1.0);
+    outColor = vec4(albedo.rgb * (0.35 + 0.65 * diffuse) + materialEmissive(), 1.0);
 }

@@ -8,8 +8,8 @@ out vec3 vWorldNormal;
 out vec2 vTexcoord;
 
 void main() {
-    vec4 world = inWorld * vec4(inPosition, 1.0);
-    vWorldNormal = inNormalMatrix * inNormal;
+    vec4 world = instanceWorld() * vec4(inPosition, 1.0);
+    vWorldNormal = instanceNormalMatrix() * inNormal;
     vTexcoord = inTexcoord;
     gl_Position = uWorldToClip * world;
 }

@@ -1,18 +1,37 @@
 // glTF metallic-roughness subset used here: base colour factor x texture (sRGB texture, so
-// sampling returns linear colour), alpha mask cut-off.
-uniform vec4 uBaseColorFactor;
-uniform bool uHasBaseColorTexture;
-uniform int uAlphaMode;  // 0 opaque, 1 mask, 2 blend
-uniform float uAlphaCutoff;
-uniform vec3 uEmissive;
+// sampling returns linear colour), alpha mask cut-off, emission. Every material of the scene lives
+// in one storage buffer; a draw selects its entry with uMaterial (one integer per draw at a cached
+// location: no per-draw uniform lookups by name).
+//
+// Variants by #define (renderer/material_programs.h): MATERIAL_TEXTURED and MATERIAL_ALPHA_TEST,
+// each 0 or 1, fix at compile time what the generic program (neither defined) decides per
+// material at run time, so untextured materials skip the texture fetch and opaque ones the alpha
+// test (and its discard, which keeps early depth testing on).
+struct MaterialData {
+    vec4 baseColorFactor;    // linear
+    vec4 emissiveAndCutoff;  // xyz emissive factor, w alpha cut-off
+    ivec4 modeAndTexture;    // x alpha mode (0 opaque, 1 mask, 2 blend), y 1 = has a base colour texture
+};
+layout(std430, binding = 1) readonly buffer MaterialBuffer { MaterialData materials[]; };
+uniform int uMaterial;
 layout(binding = 0) uniform sampler2D uBaseColorTexture;
 
 vec4 baseColor(vec2 uv) {
-    vec4 c = uBaseColorFactor;
-    if (uHasBaseColorTexture) c *= texture(uBaseColorTexture, uv);
+    vec4 c = materials[uMaterial].baseColorFactor;
+#if !defined(MATERIAL_TEXTURED)
+    if (materials[uMaterial].modeAndTexture.y != 0) c *= texture(uBaseColorTexture, uv);
+#elif MATERIAL_TEXTURED
+    c *= texture(uBaseColorTexture, uv);
+#endif
     return c;
 }
 
 void alphaTest(float alpha) {
-    if (uAlphaMode == 1 && alpha < uAlphaCutoff) discard;
+#if !defined(MATERIAL_ALPHA_TEST)
+    if (materials[uMaterial].modeAndTexture.x == 1 && alpha < materials[uMaterial].emissiveAndCutoff.w) discard;
+#elif MATERIAL_ALPHA_TEST
+    if (alpha < materials[uMaterial].emissiveAndCutoff.w) discard;
+#endif
 }
+
+vec3 materialEmissive() { return materials[uMaterial].emissiveAndCutoff.xyz; }

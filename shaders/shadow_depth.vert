@@ -14,7 +14,7 @@ out float vLinearDepth;
 #endif
 
 void main() {
-    vec4 world = inWorld * vec4(inPosition, 1.0);
+    vec4 world = instanceWorld() * vec4(inPosition, 1.0);
     vTexcoord = inTexcoord;
     gl_Position = uWorldToShadowClip * world;
 #ifdef LINEAR_DEPTH

@@ -1,0 +1,85 @@
+// Drawing the scene's instances in a pass: grouped instanced draws over a culled list (or the
+// runs of the fixed slot order), the material's program variant, storage-buffer entry, texture and
+// face culling per draw. No per-draw uniform lookups by name and no per-draw string work.
+#include "renderer.h"
+#include "renderer_frame.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace shadowlab {
+
+Renderer::ProgramFor Renderer::passPrograms(MaterialPrograms& programs, bool depthOnly, const Settings& settings,
+                                            std::function<void(const gl::Program&)> setup) {
+    // The pass's uniforms go onto each program the first time a draw of this pass uses it.
+    auto prepared = std::make_shared<std::vector<const gl::Program*>>();
+    const bool variants = settings.skip.shaderVariants;
+    return [&programs, depthOnly, variants, prepared, setup = std::move(setup)](const GpuMaterial& material) {
+        const DrawProgram p = programs.forMaterial(material, depthOnly, variants);
+        if (std::find(prepared->begin(), prepared->end(), p.program) == prepared->end()) {
+            setup(*p.program);
+            prepared->push_back(p.program);
+        }
+        return p;
+    };
+}
+
+void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances,
+                         bool cullFrontFaces, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
+    const DrawProgram only{&program, program.location("uMaterial")};
+    drawScene([&](const GpuMaterial&) { return only; }, frame, instances, cullFrontFaces, counts, surfaces,
+              targetMirrored);
+}
+
+void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const InstanceList& instances,
+                         bool cullFrontFaces, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
+    if (instances.empty()) return;
+    const Scene& scene = frame.scene;
+    gpuScene_->bindVertexArray();
+    glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
+    const gl::Program* current = nullptr;
+    GLuint boundTexture = ~0u;
+    auto draw = [&](const GpuPrimitive& prim, GLuint first, GLsizei count, bool mirrored) {
+        const GpuMaterial& m = gpuScene_->material(prim.material);
+        if (surfaces != Surfaces::All && m.blended != (surfaces == Surfaces::Blended)) return;
+        const DrawProgram p = programFor(m);
+        if (p.program != current) {
+            p.program->use();
+            current = p.program;
+        }
+        glUniform1i(p.materialLocation, m.slot);  // -1 (unused by this variant) is ignored by GL
+        if (m.textured && m.texture != boundTexture) {
+            glBindTextureUnit(0, m.texture);
+            glBindSampler(0, m.sampler);
+            boundTexture = m.texture;
+        }
+        // Double-sided surfaces are drawn from both sides in every pass.
+        if (m.doubleSided) glDisable(GL_CULL_FACE);
+        else glEnable(GL_CULL_FACE);
+        // A negative-scale node flips the winding, and so does a mirroring target projection.
+        glFrontFace(mirrored != targetMirrored ? GL_CW : GL_CCW);
+        glDrawElementsInstancedBaseVertexBaseInstance(
+            GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
+            prim.baseVertex, first);
+        ++counts.drawCalls;
+        counts.triangles += std::size_t(prim.indexCount / 3) * std::size_t(count);
+    };
+    if (frame.settings.skip.groupedDraws) {
+        // One instanced call per primitive and (mesh, winding) group of the culled list.
+        for (const DrawGroup& g : gpuScene_->bindDrawList(scene, instances))
+            for (const GpuPrimitive& prim : gpuScene_->meshes()[std::size_t(g.mesh)].primitives)
+                draw(prim, g.first, g.count, g.mirrored);
+        gpuScene_->restoreSlotOrder();
+    } else {
+        // One call per run of consecutive visible slots (the linear layout).
+        InstanceMask mask(scene.instances.size(), 0);
+        for (std::uint32_t i : instances) mask[i] = 1;
+        gpuScene_->forEachRun(scene, mask, draw);
+    }
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    glDisable(GL_CULL_FACE);
+}
+
+}  // namespace shadowlab
