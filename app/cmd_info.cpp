@@ -1,5 +1,6 @@
 // shadowlab info SCENE: what the loader made of a glTF file (counts, lights, cameras, bounds,
 // warnings). Exit 0 on success; on failure one message on stderr and a non-zero exit.
+// Textures are only sized from their headers, never decoded: info prints none of their pixels.
 #include "commands.h"
 #include "scenes/gltf_loader.h"
 
@@ -11,12 +12,40 @@
 
 namespace shadowlab::app {
 
+namespace {
+
+struct InfoOptions {
+    std::string scene;
+    std::vector<std::string> limits;
+};
+
+}  // namespace
+
+bool applyLoadLimits(LoadOptions& options, const std::vector<std::string>& limits, std::string& error) {
+    for (const std::string& limit : limits)
+        if (!setLoadLimit(options.limits, limit, error)) return false;
+    return true;
+}
+
+void addLoadLimitOption(CLI::App& cmd, std::vector<std::string>& limits) {
+    cmd.add_option("--limit", limits,
+                   "raise or lower a load budget, KEY=N (repeatable; `shadowlab settings` lists the keys)");
+}
+
 void addInfoCommand(CLI::App& app) {
-    auto scene = std::make_shared<std::string>();
+    auto options = std::make_shared<InfoOptions>();
     CLI::App* cmd = app.add_subcommand("info", "Load a glTF scene and print what it holds");
-    cmd->add_option("scene", *scene, "glTF scene (.gltf or .glb)")->required();
-    cmd->callback([scene] {
-        const LoadResult result = loadScene(*scene);
+    cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
+    addLoadLimitOption(*cmd, options->limits);
+    cmd->callback([options] {
+        LoadOptions load;
+        load.textures = TextureDecoding::HeadersOnly;
+        std::string error;
+        if (!applyLoadLimits(load, options->limits, error)) {
+            std::cerr << "shadowlab info: " << error << "\n";
+            throw CLI::RuntimeError(2);
+        }
+        const LoadResult result = loadScene(options->scene, load);
         if (!result.ok()) {
             std::cerr << "shadowlab info: " << result.error << "\n";
             throw CLI::RuntimeError(1);

@@ -29,6 +29,7 @@ struct RenderOptions {
     std::string statsFile;  // --stats: the frame's figures as JSON
     bool truth = false;
     SettingsOverrides overrides;
+    std::vector<std::string> limits;  // --limit KEY=N load budgets
 };
 
 [[noreturn]] void fail(const std::string& message, int code = 1) {
@@ -74,10 +75,12 @@ void writeStats(Renderer& renderer, const std::string& file) {
 }
 
 void runRender(const RenderOptions& options) {
-    std::optional<Scene> scene = loadSceneReporting(options.scene);
+    std::string error;
+    LoadOptions load;
+    if (!applyLoadLimits(load, options.limits, error)) fail(error, 2);
+    std::optional<Scene> scene = loadSceneReporting(options.scene, load);
     if (!scene) throw CLI::RuntimeError(1);
     Settings settings = initialSettings(*scene);
-    std::string error;
     if (!applyOverrides(settings, options.overrides, error)) fail(error);
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
         fail("--width/--height must be between 16 and 16384");
@@ -141,6 +144,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--stats", options->statsFile,
                     "write the frame's figures as JSON: draw calls and triangles per pass, instances culled "
                     "(view / caster), CPU ms per stage, GPU ms per pass, whether the shadow map was reused");
+    addLoadLimitOption(*cmd, options->limits);
     cmd->add_flag("--measure", options->measure,
                   "print, per method, the frame time and the perspective aliasing error (screen pixels per "
                   "shadow-map texel, thesis 8.2.1) over the visible receivers");

@@ -12,8 +12,8 @@ namespace shadowlab::app {
 
 std::string defaultScenePath() { return SHADOWLAB_DEFAULT_SCENE; }
 
-std::optional<Scene> loadSceneReporting(const std::string& file) {
-    LoadResult result = loadScene(file);
+std::optional<Scene> loadSceneReporting(const std::string& file, const LoadOptions& options) {
+    LoadResult result = loadScene(file, options);
     for (const std::string& w : result.warnings) std::cerr << "shadowlab: warning: " << w << "\n";
     if (!result.ok()) {
         std::cerr << "shadowlab: " << result.error << "\n";

@@ -1,6 +1,7 @@
 #pragma once
 // What `render` and the viewer share: loading a scene with its messages, and the settings a
 // scene starts with (its first camera, then --view JSON, then --method and --set overrides).
+#include "scenes/gltf_loader.h"
 #include "scenes/scene.h"
 #include "settings/settings.h"
 
@@ -13,7 +14,7 @@ namespace shadowlab::app {
 std::string defaultScenePath();
 
 // Loads SCENE; on failure prints "shadowlab: <file>: <reason>" and returns nullopt.
-std::optional<Scene> loadSceneReporting(const std::string& file);
+std::optional<Scene> loadSceneReporting(const std::string& file, const LoadOptions& options = {});
 
 // Settings for the first view of a scene: the first glTF camera (or the framing camera).
 Settings initialSettings(const Scene& scene);

@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,10 @@ struct Texture {
     std::string name;
     int width = 0;
     int height = 0;
-    std::vector<std::uint8_t> rgba8;  // decoded, 4 channels, sRGB-encoded colour
+    std::vector<std::uint8_t> rgba8;  // decoded, 4 channels, sRGB-encoded colour (empty until decoded)
+    // The image file's PNG/JPEG bytes, kept only when loaded with TextureDecoding::Deferred (see
+    // decodeTexture); shared by the textures that use the same image.
+    std::shared_ptr<const std::vector<std::uint8_t>> encoded;
     Sampler sampler;
 };
 

@@ -1,0 +1,148 @@
+#pragma once
+// Shared by the loader's files (not part of the public API): the failure type, message helpers,
+// the container checks and the Converter that turns a parsed tinygltf model into a Scene.
+//   gltf_container.cpp   file bytes, GLB layout, JSON size/depth, asset and extensions
+//   gltf_accessors.cpp   byte ranges and accessor decoding (sparse, normalized, shared)
+//   gltf_textures.cpp    image capture, header checks and the texture budget, decoding
+//   gltf_meshes.cpp      materials, primitives, the geometry budget
+//   gltf_nodes.cpp       nodes, lights, cameras, the instance budget, animations
+//   gltf_loader.cpp      the steps in order, load limits
+#include "scenes/gltf_loader.h"
+
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace shadowlab::gltf {
+
+using json = nlohmann::json;
+
+struct LoadFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] inline void fail(const std::string& reason) { throw LoadFailure(reason); }
+
+// Names come from the file: a 50 MB name must not become a 50 MB message.
+inline std::string quoted(const std::string& name) {
+    return "'" + (name.size() > 80 ? name.substr(0, 77) + "..." : name) + "'";
+}
+
+// "mesh 3 'Arch'" style labels: messages must let a user find the object in the file.
+std::string label(const char* kind, std::size_t index, const std::string& name);
+
+// "exceeds the load limit vertices = 33554432 (raise it with --limit vertices=N)"
+std::string overLimit(const char* key, std::uint64_t limit);
+
+// Multi-line tinygltf/stb messages as one line.
+std::string cleanMessage(const std::string& text);
+
+// ---------------------------------------------------------------- container (gltf_container.cpp)
+// The whole file, refused before reading when it is not a regular file (a FIFO would block, a
+// device never end) or larger than limits.fileBytes.
+std::vector<unsigned char> readFileBytes(const std::filesystem::path& file, const LoadLimits& limits);
+bool isGlb(const std::vector<unsigned char>& bytes);
+// The GLB layout (glTF 2.0 spec, "Binary glTF Layout"); returns the JSON chunk.
+std::string checkGlb(const std::vector<unsigned char>& bytes);
+// Size and nesting depth checked on the text before a DOM is built (a deep file would otherwise
+// exhaust the stack of a recursive consumer); parse errors with line and column.
+json parseJson(const std::string& text, const LoadLimits& limits);
+void checkAssetAndExtensions(const json& root, std::vector<std::string>& warnings);
+void checkDeclaredCounts(const json& root, const LoadLimits& limits);
+void checkExternalFiles(const json& root, const std::filesystem::path& baseDir);
+
+const json* member(const json& object, const char* key);
+
+// ---------------------------------------------------------------- images (gltf_textures.cpp)
+// Images are captured encoded while tinygltf parses; only those a base colour texture uses are
+// looked at afterwards (Sponza's normal and roughness maps are never decoded).
+struct ImageCapture {
+    const tinygltf::Model* model = nullptr;
+    std::vector<char> wanted;  // per image: a base colour texture uses it (others are not kept)
+    std::map<int, std::shared_ptr<const std::vector<std::uint8_t>>> encoded;
+};
+// The images that materials' base colour textures name, from the JSON (before tinygltf's parse).
+std::vector<char> baseColorImages(const json& root);
+bool captureImage(tinygltf::Image* image, int index, std::string* err, std::string* warn, int reqWidth,
+                  int reqHeight, const unsigned char* bytes, int size, void* user);
+
+// ---------------------------------------------------------------- the model -> Scene conversion
+class Converter {
+public:
+    Converter(const tinygltf::Model& model, const json& rootJson, const ImageCapture& capture,
+              const LoadOptions& options, std::vector<std::string>& warnings, Scene& target);
+    // Nodes first (cheap, gives the instance count), then every budget from the declared counts,
+    // then the decoding.
+    void convert();
+
+private:
+    const tinygltf::Model& m;
+    const json& root;
+    const ImageCapture& images;
+    const LoadOptions& options;
+    std::vector<std::string>& warnings;
+    Scene& scene;
+
+    void warn(const std::string& message) { warnings.push_back(message); }
+
+    // accessors (gltf_accessors.cpp)
+    struct DecodedAccessor {
+        std::vector<double> values;  // count * components
+        std::size_t count = 0;
+    };
+    // Accessors referenced by more than one primitive are decoded once and kept until their last
+    // user is done (a mesh whose primitives share one POSITION accessor is the common case).
+    using AccessorUse = std::tuple<int, int, bool>;  // accessor, components, integerOnly
+    std::map<AccessorUse, int> accessorUsers;
+    std::map<AccessorUse, std::shared_ptr<const DecodedAccessor>> accessorCache;
+    const unsigned char* viewRange(int viewIndex, std::size_t byteOffset, std::size_t count, std::size_t elementSize,
+                                   bool useViewStride, std::size_t& stride, const std::string& what) const;
+    std::vector<double> readAccessor(int index, const std::string& what, int wantComponents, bool integerOnly,
+                                     std::size_t& count) const;
+    std::shared_ptr<const DecodedAccessor> sharedAccessor(int index, const std::string& what, int wantComponents,
+                                                          bool integerOnly);
+    void countAccessorUsers();
+
+    // textures and materials (gltf_textures.cpp, gltf_meshes.cpp)
+    struct TextureKey {
+        int image;
+        int sampler;
+        auto operator<=>(const TextureKey&) const = default;
+    };
+    std::map<int, int> textureSlots;        // glTF texture -> Scene::textures (-1: drawn untextured)
+    std::map<TextureKey, int> sharedSlots;  // (image, sampler) -> Scene::textures: one decode each
+    std::vector<int> slotImages;            // Scene::textures -> glTF image
+    std::uint64_t textureBytes = 0;
+    int useTexture(int gltfTexture, const std::string& what);
+    bool imageFitsBudget(int image, int& width, int& height);
+    void decodeTextures();
+    void convertMaterials();
+    bool textureTransform(int material, glm::dmat3& transform) const;
+
+    // meshes (gltf_meshes.cpp)
+    std::vector<std::uint64_t> meshTriangles;  // declared triangles per glTF mesh (for the instance budget)
+    void checkGeometryBudget();
+    std::optional<Primitive> convertPrimitive(const tinygltf::Primitive& src, const std::string& where);
+    void convertMeshes();
+
+    // nodes, lights, cameras, animations (gltf_nodes.cpp)
+    std::vector<int> reachableOrder;  // nodes of the displayed scene, depth first
+    int nodeLight(std::size_t nodeIndex) const;
+    void convertNodes();
+    void checkInstanceBudget() const;
+    void addLight(int gltfLight, int node);
+    void addCamera(int gltfCamera, int node);
+    void convertAnimations();
+};
+
+bool finiteAll(const std::vector<double>& v);
+
+}  // namespace shadowlab::gltf
