@@ -1,7 +1,10 @@
 // shadowlab stress --cases N --seed S: the shadow math's random stress suite (renderer/math/stress.h).
 // Prints per method: cases, NaN/Inf count, containment failures, fallbacks; exits non-zero on any
-// NaN/Inf or containment failure.
+// NaN/Inf or containment failure. Then the method-comparison sweep (renderer/math/method_sweep.h):
+// PSM and LiSPSM against focused SSM on random views; exits non-zero when a warp is worse than
+// 1.5x SSM on any view.
 #include "commands.h"
+#include "math/method_sweep.h"
 #include "math/stress.h"
 
 #include <CLI/CLI.hpp>
@@ -17,24 +20,35 @@ struct StressCommandOptions {
     long long cases = 100000;
     long long seed = 1;
     int samples = 8;
+    long long sweepSun = 4000, sweepSpot = 2000;
 };
 
 void runStressCommand(const StressCommandOptions& o) {
-    if (o.cases < 1) {
-        std::cerr << "shadowlab stress: --cases must be at least 1\n";
+    if (o.cases < 0) {
+        std::cerr << "shadowlab stress: --cases must not be negative\n";
         throw CLI::RuntimeError(2);
     }
     if (o.samples < 0 || o.samples > 1000) {
         std::cerr << "shadowlab stress: --samples must be between 0 and 1000\n";
         throw CLI::RuntimeError(2);
     }
+    if (o.sweepSun < 0 || o.sweepSpot < 0) {
+        std::cerr << "shadowlab stress: --sweep-sun and --sweep-spot must not be negative\n";
+        throw CLI::RuntimeError(2);
+    }
     StressOptions options;
     options.cases = std::uint64_t(o.cases);
     options.seed = std::uint64_t(o.seed);
     options.samplesPerCase = o.samples;
-    const StressReport report = runStress(options);
+    const StressReport report = options.cases > 0 ? runStress(options) : StressReport{};
     std::cout << report.text();
-    if (!report.passed()) {
+    SweepOptions sweepOptions;
+    sweepOptions.seed = std::uint64_t(o.seed);
+    sweepOptions.directionalViews = std::uint64_t(o.sweepSun);
+    sweepOptions.spotViews = std::uint64_t(o.sweepSpot);
+    const SweepReport sweep = runMethodSweep(sweepOptions);
+    std::cout << "\nmethod sweep\n" << sweep.text();
+    if (!report.passed() || !sweep.passed()) {
         std::cerr << "shadowlab stress: failures found (see above)\n";
         throw CLI::RuntimeError(1);
     }
@@ -48,6 +62,9 @@ void addStressCommand(CLI::App& app) {
     cmd->add_option("--cases", options->cases, "Number of random configurations")->capture_default_str();
     cmd->add_option("--seed", options->seed, "Random seed (cases are reproducible per seed)")->capture_default_str();
     cmd->add_option("--samples", options->samples, "Points of V n S per case tested against B")->capture_default_str();
+    cmd->add_option("--sweep-sun", options->sweepSun, "Method sweep: random views lit by a sun")->capture_default_str();
+    cmd->add_option("--sweep-spot", options->sweepSpot, "Method sweep: random views lit by a spot light")
+        ->capture_default_str();
     cmd->callback([options] { runStressCommand(*options); });
 }
 

@@ -59,6 +59,9 @@ struct ShadowLight {
 struct LispsmParams {
     bool useBodyVector = false;  // thesis 9.2.6 (directional lights only): frame up-vector from B
     double virtualFar = 0.0;     // thesis 9.2.5 / paper 4.4: z_f used for n only; <= 0 or >= zFar: real far
+    // The nearest visible depth (the depth pre-pass measures it), used for n only, symmetric to
+    // virtualFar: <= zNear means the real near plane.
+    double pseudoNear = 0.0;
     bool overrideN = false;      // use `n` instead of n_opt
     double n = 1.0;
 };

@@ -1,10 +1,11 @@
 #include "math/stress.h"
 
+#include "math/random.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <sstream>
 
 namespace shadowlab {
@@ -12,26 +13,6 @@ namespace shadowlab {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// A small deterministic generator (splitmix64 seeding + xoshiro-like mixing is overkill here):
-// std::mt19937_64 is fully specified by the standard, so cases reproduce across platforms;
-// the distributions are written by hand because std:: distributions are not.
-struct Rng {
-    std::mt19937_64 g;
-    explicit Rng(std::uint64_t seed) : g(seed) {}
-    double uniform() { return double(g() >> 11) * (1.0 / 9007199254740992.0); }
-    double uniform(double a, double b) { return a + (b - a) * uniform(); }
-    double logUniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
-    int pick(int n) { return int(uniform() * n) % n; }
-    bool chance(double p) { return uniform() < p; }
-    glm::dvec3 unit() {
-        for (;;) {
-            const glm::dvec3 v{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-            const double l = glm::length(v);
-            if (l > 1e-3 && l <= 1.0) return v / l;
-        }
-    }
-};
 
 std::uint64_t mix(std::uint64_t x) {
     x += 0x9E3779B97F4A7C15ull;

@@ -1,0 +1,65 @@
+#pragma once
+// The method-comparison sweep (issue 9): random walk-through views over a ground plane, each lit by
+// a sun or by a spot light above the ground aiming into the view, and for every method the same
+// error figure: the 99th percentile over the visible ground points inside the map of the texel
+// footprint m (math/texel_footprint.h, receiver normal = the ground's). PSM and LiSPSM are compared
+// with the focused SSM on the same view. The depth range a renderer's depth pre-pass would
+// measure (nearest / farthest visible ground point) is handed to PSM (auto near plane) and LiSPSM
+// (pseudo near, virtual far), as the renderer does. Lives in the library so gtest and
+// `shadowlab stress --sweep` share it.
+#include "math/shadow_setup.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct SweepOptions {
+    std::uint64_t directionalViews = 4000;
+    std::uint64_t spotViews = 2000;
+    std::uint64_t seed = 1;
+    double mapSize = 2048.0;
+    double imageHeight = 720.0, aspect = 16.0 / 9.0;
+    int samplesX = 96, samplesY = 54;  // ground samples per view (a grid over the image)
+};
+
+struct SweepCase {
+    ViewFrustum view;
+    ShadowLight light;
+    Aabb scene;  // ground half-size x box height; the ground is the plane y = scene.min.y
+    std::string describe() const;
+};
+
+struct SweepMethodFigures {
+    ShadowMethod method = ShadowMethod::Lispsm;
+    std::uint64_t views = 0;
+    std::uint64_t worse5 = 0;   // p99 > 1.05 x SSM's
+    std::uint64_t worse50 = 0;  // p99 > 1.5 x SSM's
+    std::uint64_t fallbacks = 0;
+    double worstRatio = 0.0;  // largest p99 / SSM p99
+    std::string worstCase;
+    double logGainSum = 0.0;  // sum of log(SSM p99 / method p99)
+    double geometricMeanGain() const;
+};
+
+struct SweepReport {
+    std::uint64_t directionalViews = 0, spotViews = 0, skipped = 0;  // skipped: no visible lit ground
+    std::vector<SweepMethodFigures> directional, spot;               // PSM and LiSPSM
+    double seconds = 0.0;
+    bool passed() const;  // no warp above 1.5 x SSM on any view
+    std::string text() const;
+};
+
+SweepReport runMethodSweep(const SweepOptions& options);
+
+// One view's figure, for tests: the p99 of m over the visible lit ground inside the map (NaN if
+// there is none). `params` gets the pre-pass depth range the sweep hands to PSM and LiSPSM.
+struct SweepViewFigure {
+    double p99 = 0.0;
+    std::size_t points = 0;
+    std::string fallback;
+};
+SweepViewFigure sweepViewFigure(const SweepCase& c, ShadowMethod method, const SweepOptions& options);
+
+}  // namespace shadowlab
