@@ -164,6 +164,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // Thesis 9.2.5: with a depth-only pass, z_f is the farthest visible depth.
         if (lispsmAutoFar && visible.farthest > 0.0)
             params.lispsm.virtualFar = std::clamp(visible.farthest, view.zNear * 1.001, view.zFar);
+        // The nearest visible depth, symmetric to z_f: LiSPSM's warp search and PSM's guard
+        // sample receivers from there on (math/lispsm_search.h).
+        if (visible.nearest > 0.0) params.lispsm.pseudoNear = visible.nearest;
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
         frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds, params);
         stats.shadow = frame.shadow.diagnostics;

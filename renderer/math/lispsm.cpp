@@ -1,6 +1,8 @@
 // LiSPSM: the choice of n (thesis 8.2-8.3, 9.2.5) and the warp matrix (9.2.4).
 #include "math/lispsm.h"
 
+#include "math/lispsm_search.h"
+
 namespace shadowlab {
 
 using namespace detail;
@@ -67,7 +69,7 @@ struct NChoice {
 // Thesis 9.2.5: n from B's light-space extent (d), and z0/z1 from the plane through e_world
 // perpendicular to the view direction (the camera near plane when it intersects B).
 NChoice chooseN(const LightSpace& ls, const std::vector<glm::dvec3>& body, const glm::dvec3& eWorld,
-                const ViewFrustum& view, const ViewBasis& basis) {
+                const ViewFrustum& view, const ViewBasis& basis, bool bodyVector) {
     NChoice c;
     if (body.empty()) return c;
     const LightSpaceExtent e = extentIn(ls.L, body);
@@ -89,7 +91,7 @@ NChoice chooseN(const LightSpace& ls, const std::vector<glm::dvec3>& body, const
     };
     c.z0 = eyeZ({els.x, y, zNearLs});
     c.z1 = eyeZ({els.x, y, zFarLs});
-    if (!ls.spot) {
+    if (!ls.spot && !bodyVector) {
         // Eq. 8.11 with z_n = the distance of the plane through e_world (= zNear when the near
         // plane intersects B) and d = B's light-space depth (thesis 9.2.5).
         const double zn = std::max(glm::dot(eWorld - view.eye, basis.forward), 1e-300);
@@ -99,7 +101,9 @@ NChoice chooseN(const LightSpace& ls, const std::vector<glm::dvec3>& body, const
         c.warp = warpDirectional(zn, c.d, sinGamma);
         c.ok = std::isfinite(c.warp);
     } else {
-        c.nOpt = lispsmNOptGeneral(c.d, c.z0, c.z1);  // eq. 8.13
+        // Eq. 8.13: spot lights (9.2.3), and the body vector (9.2.6), whose frame is not the view
+        // direction's, so z0/z1 are measured in it rather than z_n along the view.
+        c.nOpt = lispsmNOptGeneral(c.d, c.z0, c.z1);
         c.warp = warpGeneral(c.d, c.z0, c.z1);
         c.ok = std::isfinite(c.warp);
     }
@@ -141,36 +145,42 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
                          : 0.0;
         if (!spot) diag.gamma = std::acos(std::clamp(glm::dot(up, l), -1.0, 1.0));
     }
-    const NChoice real = chooseN(ls, bv, eWorld, view, basis);
+    const NChoice real = chooseN(ls, bv, eWorld, view, basis, params.useBodyVector && !spot);
     diag.nOptReal = real.nOpt;
-    NChoice used = real;
-    const double zf = params.virtualFar;
-    if (zf > view.zNear && zf < view.zFar) {
-        // Thesis 9.2.5 / paper 4.4: n from a body built with the virtual far plane; the
-        // focusing (bv) keeps the real B.
-        ViewFrustum virtualView = view;
-        virtualView.zFar = zf;
-        const ConvexBody Bv = intersectionBody(virtualView, light, in.sceneBounds);
-        const NChoice virt = chooseN(ls, Bv.vertices(), eWorld, view, basis);
-        diag.nOptVirtual = virt.nOpt;
-        if (!Bv.empty()) used = virt;
-        else diag.fallback = "virtual far plane gives an empty body: n from the real far plane";
+    diag.d = real.d;
+    diag.z0 = real.z0;
+    diag.z1 = real.z1;
+    // The visible depth range the depth pre-pass measured: z_f from the farthest visible depth
+    // (thesis 9.2.5, paper 4.4) and, symmetric to it, the nearest (an interior's near plane of
+    // 0.01 would otherwise claim the warp for depths nothing is seen at). Used for n only.
+    auto within = [&](double z) { return z > view.zNear && z < view.zFar; };
+    const double depthNear = within(params.pseudoNear) ? params.pseudoNear : view.zNear;
+    const double depthFar = std::max(within(params.virtualFar) ? params.virtualFar : view.zFar, depthNear * (1.0 + 1e-9));
+    // The closed form for that range: eq. 8.11 with z_f = z_n + d sin(gamma), i.e.
+    // n = (z_n + sqrt(z_n z_f)) / sin(gamma). Spot lights keep eq. 8.13 of the real body.
+    const double sinGamma = std::sin(diag.gamma);
+    diag.nOptVirtual = spot || params.useBodyVector ? real.nOpt
+                       : sinGamma > 0.0            ? (depthNear + std::sqrt(depthNear * depthFar)) / sinGamma
+                                                   : kInf;
+    const double zNearLs = e.z.hi;
+    double k = 0.0;
+    if (params.overrideN) {
+        k = params.n > 0.0 && std::isfinite(params.n) ? 1.0 / params.n : 0.0;
     } else {
-        diag.nOptVirtual = real.nOpt;
+        // The measured choice (lispsm_search.h): never worse than k = 0 (SSM) on its samples.
+        const WarpSearchInput search{view, light, in.sceneBounds, ls, bv, in.visibleLit, zNearLs, els.x, depthNear, depthFar};
+        const WarpSearchResult found = searchWarp(search, std::isfinite(diag.nOptVirtual) ? 1.0 / diag.nOptVirtual : 0.0);
+        k = found.warp;
+        diag.warpSamples = found.samples;
+        diag.estimatedGainOverSsm = found.worstFootprint > 0.0 ? found.uniformFootprint / found.worstFootprint : 1.0;
     }
-    double k = used.warp;
-    if (params.overrideN) k = params.n > 0.0 && std::isfinite(params.n) ? 1.0 / params.n : 0.0;
     if (!std::isfinite(k) || k < 0.0) {
         k = 0.0;
         diag.fallback = "n is not finite: uniform (SSM) map";
     }
     diag.warp = k;
     diag.nUsed = k > 0.0 ? 1.0 / k : kInf;
-    diag.d = used.d;
-    diag.z0 = used.z0;
-    diag.z1 = used.z1;
     // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
-    const double zNearLs = e.z.hi;
     M = fitToPoints(lispsmPreFit(zNearLs, els.x, k, e.y.lo) * ls.L, bv, true);
     if (k > 0.0) {
         const glm::dvec4 ch = glm::inverse(ls.L) * glm::dvec4(els.x, els.y, zNearLs + 1.0 / k, 1.0);

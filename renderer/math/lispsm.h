@@ -12,6 +12,7 @@ struct LispsmInputs {
     const Aabb& sceneBounds;
     const LightSpace& ls;
     const std::vector<glm::dvec3>& bodyVertices;  // B
+    const ConvexBody& visibleLit;                 // L n V n S (V n S for suns): where receivers are
     glm::dvec3 eWorld;                            // thesis 9.2.3
     double rayLength = 1.0;                       // a length of B's scale (for finite differences)
 };

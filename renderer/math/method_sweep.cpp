@@ -95,10 +95,8 @@ ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum&
     p.collectPolygons = false;
     if (method == ShadowMethod::Psm && 0.5 * g.nearest > shadowView.zNear)
         shadowView.zNear = std::min(0.5 * g.nearest, 0.5 * shadowView.zFar);
-    if (method == ShadowMethod::Lispsm) {
-        p.lispsm.virtualFar = std::clamp(g.farthest, shadowView.zNear * 1.001, shadowView.zFar);
-        p.lispsm.pseudoNear = g.nearest;
-    }
+    p.lispsm.virtualFar = std::clamp(g.farthest, shadowView.zNear * 1.001, shadowView.zFar);
+    p.lispsm.pseudoNear = g.nearest;
     return p;
 }
 
@@ -193,7 +191,7 @@ SweepReport runMethodSweep(const SweepOptions& o) {
     for (int kind = 0; kind < 2; ++kind) {
         const bool spot = kind == 1;
         auto& list = spot ? report.spot : report.directional;
-        for (ShadowMethod m : warps) list.push_back(SweepMethodFigures{m});
+        for (ShadowMethod m : warps) list.push_back(SweepMethodFigures{m, 0, 0, 0, 0, 0.0, {}, 0.0});
         const std::uint64_t wanted = spot ? o.spotViews : o.directionalViews;
         Rng rng(o.seed * 2 + std::uint64_t(kind));
         std::uint64_t done = 0;

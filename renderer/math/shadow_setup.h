@@ -107,6 +107,11 @@ struct ShadowDiagnostics {
     // the light rays.
     double gamma = 0.0;
     double d = 0.0;      // light-space z extent of B (thesis 9.2.4)
+    // LiSPSM's measured warp choice (math/lispsm_search.h): the number of sample points, and the
+    // largest texel footprint over them with SSM divided by that with the chosen warp (>= 1; 1
+    // means the warp cannot beat the uniform map on this view and n = infinity was chosen).
+    int warpSamples = 0;
+    double estimatedGainOverSsm = 1.0;
     double z0 = 0.0, z1 = 0.0;  // eye-space z (negative in front) of the points of eq. 8.13
     // PSM (Stamminger & Drettakis 4.2).
     double psmMoveBack = 0.0;   // how far the virtual camera moved back along -forward

@@ -222,7 +222,10 @@ TEST(ShadowSetupInvariants, EveryVertexOfBLandsInTheClipCube) {
             SCOPED_TRACE(std::string(c.name) + " / method " + std::to_string(int(m)));
             const ShadowSetup s = setupFor(c.view, c.light, terrain(), m);
             expectBInClipCube(s, B);
-            EXPECT_TRUE(s.diagnostics.fallback.empty()) << s.diagnostics.fallback;
+            // The only fallback allowed is PSM's guard (a worse footprint than the uniform map).
+            EXPECT_TRUE(s.diagnostics.fallback.empty() ||
+                        s.diagnostics.fallback.starts_with("PSM: its worst texel footprint"))
+                << s.diagnostics.fallback;
             // The diagnostics carry the bodies for the UI.
             EXPECT_EQ(s.diagnostics.bodyB.size(), B.faces().size());
             EXPECT_EQ(s.diagnostics.viewV.size(), 6u);

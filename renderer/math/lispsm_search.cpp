@@ -1,0 +1,235 @@
+#include "math/lispsm_search.h"
+
+#include "math/texel_footprint.h"
+
+namespace shadowlab::detail {
+
+namespace {
+
+// Warp candidates: u = ln(1 + k d) (d = B's light-space depth, so 1 + k d = f/n of P) on a grid,
+// then golden-section refinement around the best grid point over the samples that were within
+// kActiveShare of the largest footprint at some grid point (the others never decide the maximum).
+constexpr int kGridSteps = 10, kRefineSteps = 12;
+constexpr double kActiveShare = 0.7;
+constexpr double kHintTolerance = 1.10;
+constexpr double kMaxWarpRatio = 1e5;  // f/n beyond this spends the map on a sliver at the eye
+
+// One sample's data, projected onto its receiver's tangent plane (t1, t2) once, so that each
+// candidate warp costs a few multiplications per sample.
+struct Sample {
+    double x = 0.0, zp = 0.0;               // light-space x and z' = zNearLs - z
+    double lx1 = 0.0, lx2 = 0.0;            // d(light x)/d(t1), d(light x)/d(t2)
+    double lz1 = 0.0, lz2 = 0.0;            // d(z')/d(t1), d(z')/d(t2)
+    double s11 = 0.0, s12 = 0.0, s21 = 0.0, s22 = 0.0;  // d(pixel)/d(t1, t2)
+};
+
+struct BodyPoint {
+    double x = 0.0, zp = 0.0;
+};
+
+void addSample(const glm::dvec3& gx, const glm::dvec3& gy, const glm::dvec3& lx,
+               const glm::dvec3& lzp, double x, double zp, const glm::dvec3& n, std::vector<Sample>& out) {
+    const glm::dvec3 t1 = anyPerpendicular(n), t2 = glm::cross(n, t1);
+    Sample s;
+    s.x = x;
+    s.zp = zp;
+    s.lx1 = glm::dot(lx, t1);
+    s.lx2 = glm::dot(lx, t2);
+    s.lz1 = glm::dot(lzp, t1);
+    s.lz2 = glm::dot(lzp, t2);
+    s.s11 = glm::dot(gx, t1);
+    s.s12 = glm::dot(gx, t2);
+    s.s21 = glm::dot(gy, t1);
+    s.s22 = glm::dot(gy, t2);
+    out.push_back(s);
+}
+
+std::vector<Sample> makeSamples(const WarpSearchInput& in) {
+    std::vector<Sample> out;
+    const ViewFrustum& v = in.view;
+    const glm::dmat4 viewProj = v.projectionMatrix() * v.viewMatrix();
+    const std::vector<ReceiverSample> receivers =
+        receiverSamples(v, in.light, in.visibleLit, in.depthNear, in.depthFar);
+    const glm::dvec3 r0{in.ls.L[0][0], in.ls.L[1][0], in.ls.L[2][0]};
+    const glm::dvec3 r2{in.ls.L[0][2], in.ls.L[1][2], in.ls.L[2][2]};
+    const glm::dvec3 r3{in.ls.L[0][3], in.ls.L[1][3], in.ls.L[2][3]};
+    out.reserve(receivers.size());
+    for (const auto& [p, normal] : receivers) {
+        glm::dvec3 gx, gy;
+        if (!projectedGradient(viewProj, p, glm::dvec2(0.5 * v.aspect, 0.5), gx, gy)) continue;
+        // Light-space x and z' gradients (L is projective for spot lights).
+        const glm::dvec4 h = in.ls.L * glm::dvec4(p, 1.0);
+        if (!(h.w > 0.0)) continue;
+        const glm::dvec3 lx = (r0 - (h.x / h.w) * r3) / h.w;
+        const glm::dvec3 lzp = -(r2 - (h.z / h.w) * r3) / h.w;  // z' = zNearLs - z
+        const double x = h.x / h.w, zp = in.zNearLs - h.z / h.w;
+        addSample(gx, gy, lx, lzp, x, zp, normal, out);
+    }
+    return out;
+}
+
+// The largest footprint over the samples for warp k, with the map fitted to B as fitToPoints does
+// (image x = (x - cx)/w, image y = z'/w, w = 1 + k z'; each axis scaled to the map).
+double worstFootprint(double k, const std::vector<Sample>& samples, const std::vector<BodyPoint>& body, double cx,
+                      double depth, std::vector<double>* perSample = nullptr) {
+    double xlo = kInf, xhi = -kInf;
+    for (const BodyPoint& q : body) {
+        const double xi = (q.x - cx) / (1.0 + k * q.zp);
+        xlo = std::min(xlo, xi);
+        xhi = std::max(xhi, xi);
+    }
+    const double su = 1.0 / std::max(xhi - xlo, 1e-300), sv = (1.0 + k * depth) / std::max(depth, 1e-300);
+    double worst = 0.0;
+    for (const Sample& s : samples) {
+        const double w = 1.0 / (1.0 + k * s.zp), w2 = w * w, ex = (s.x - cx) * k * w2;
+        const double a11 = (s.lx1 * w - ex * s.lz1) * su, a12 = (s.lx2 * w - ex * s.lz2) * su;
+        const double a21 = s.lz1 * w2 * sv, a22 = s.lz2 * w2 * sv;
+        const double det = a11 * a22 - a12 * a21;
+        double m2 = 0.0;
+        if (std::abs(det) > 0.0) {  // else the light grazes this receiver, the same for every k
+            const double c1x = s.s11 * a22 - s.s12 * a21, c1y = s.s21 * a22 - s.s22 * a21;
+            const double c2x = s.s12 * a11 - s.s11 * a12, c2y = s.s22 * a11 - s.s21 * a12;
+            m2 = std::max(c1x * c1x + c1y * c1y, c2x * c2x + c2y * c2y) / (det * det);
+        }
+        if (perSample) perSample->push_back(m2);
+        worst = std::max(worst, m2);
+    }
+    return std::sqrt(worst);
+}
+
+}  // namespace
+
+std::vector<ReceiverSample> receiverSamples(const ViewFrustum& v, const ShadowLight& light,
+                                            const ConvexBody& visibleLit, double depthNear, double depthFar) {
+    std::vector<ReceiverSample> out;
+    const ViewBasis b = viewBasis(v);
+    // The visible lit body (L n V n S) between the nearest and farthest visible depth: its
+    // vertices are the extreme receivers (nearest, farthest, at the image and cone borders), where
+    // the footprint peaks; the midpoints towards its centroid add the interior.
+    ConvexBody slab = visibleLit;
+    slab.clip(glm::dvec4(-b.forward, glm::dot(b.forward, v.eye) + depthNear));
+    slab.clip(glm::dvec4(b.forward, -glm::dot(b.forward, v.eye) - depthFar));
+    std::vector<glm::dvec3> points = slab.vertices();
+    if (points.empty()) return out;
+    glm::dvec3 centroid{0.0};
+    for (const auto& p : points) centroid += p;
+    centroid /= double(points.size());
+    const std::size_t corners = points.size();
+    for (std::size_t i = 0; i < corners; ++i) points.push_back(0.5 * (points[i] + centroid));
+    points.push_back(centroid);
+    const glm::dvec3 towardLight = -glm::normalize(light.direction);
+    out.reserve(2 * points.size());
+    for (const glm::dvec3& p : points) {
+        // Receiver normals: the bisector of the directions to the eye and to the light (the
+        // projection factor cos(phi)/cos(psi) of thesis 3.2 is 1 there: perspective aliasing
+        // only, thesis 8.2.1), and glTF's up axis (+y: floors and terrain, where large
+        // environments put most receivers). Measured on the sweep (1000 sun views): the bisector
+        // alone left 5.3% of the views > 1.05x SSM, with up as well 0.1%.
+        const glm::dvec3 toEye = glm::normalize(v.eye - p);
+        const glm::dvec3 toLight =
+            light.kind == ShadowLightKind::Spot ? glm::normalize(light.position - p) : towardLight;
+        const glm::dvec3 bisector = toEye + toLight;
+        out.push_back({p, glm::length(bisector) > 1e-6 ? glm::normalize(bisector) : toEye});
+        out.push_back({p, glm::dvec3(0.0, 1.0, 0.0)});
+    }
+    return out;
+}
+
+double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,
+                        const std::vector<ReceiverSample>& samples) {
+    FootprintCamera camera;
+    camera.viewProjection = view.projectionMatrix() * view.viewMatrix();
+    camera.widthPx = view.aspect;
+    camera.heightPx = 1.0;
+    double worst = 0.0;
+    for (const auto& s : samples) {
+        const double m = texelFootprint(worldToShadowClip, 1.0, camera, s.point, s.normal);
+        if (m > worst) worst = m;  // NaN (behind the light or the camera) never counts
+    }
+    return worst;
+}
+
+WarpSearchResult searchWarp(const WarpSearchInput& in, double warpHint) {
+    WarpSearchResult r;
+    if (!(in.depthNear > 0.0) || !(in.depthFar > in.depthNear)) return r;
+    const std::vector<Sample> samples = makeSamples(in);
+    r.samples = int(samples.size());
+    if (samples.empty()) return r;
+    std::vector<BodyPoint> body;
+    body.reserve(in.bodyVertices.size());
+    double depth = 0.0;
+    for (const auto& p : in.bodyVertices) {
+        const glm::dvec3 q = project(in.ls.L, p);
+        body.push_back({q.x, std::max(in.zNearLs - q.z, 0.0)});
+        depth = std::max(depth, body.back().zp);
+    }
+    if (!(depth > 0.0)) return r;
+    // The closed form bounds the search from above for spot lights: there the visible lit body
+    // reaches the cone's apex, where the post-projective footprint of air points asks for
+    // ever stronger warps that the receivers do not need (measured: f/n of 1e5 where eq. 8.13
+    // gives 30, the ground's p99 15x SSM's).
+    const bool bounded = in.ls.spot && warpHint > 0.0 && std::isfinite(warpHint);
+    const double uMax = bounded ? std::min(std::log(kMaxWarpRatio), std::log1p(warpHint * depth)) : std::log(kMaxWarpRatio);
+    const double step = uMax / kGridSteps;
+    // Grid pass over all samples; remember which ever come close to the maximum.
+    std::vector<char> active(samples.size(), 0);
+    std::vector<double> values;
+    double bestU = 0.0, best = kInf;
+    for (int i = 0; i <= kGridSteps; ++i) {
+        values.clear();
+        const double v = worstFootprint(std::expm1(i * step) / depth, samples, body, in.cx, depth, &values);
+        for (std::size_t s = 0; s < values.size(); ++s)
+            if (values[s] >= kActiveShare * kActiveShare * v * v) active[s] = 1;
+        if (i == 0) r.uniformFootprint = v;
+        if (v < best) {
+            best = v;
+            bestU = i * step;
+        }
+    }
+    std::vector<Sample> decisive;
+    for (std::size_t s = 0; s < samples.size(); ++s)
+        if (active[s]) decisive.push_back(samples[s]);
+    auto f = [&](double u) { return worstFootprint(std::expm1(u) / depth, decisive, body, in.cx, depth); };
+    // Golden section in [bestU - step, bestU + step].
+    double a = std::max(0.0, bestU - step), c = std::min(uMax, bestU + step);
+    constexpr double g = 0.6180339887498949;
+    double x1 = c - g * (c - a), x2 = a + g * (c - a), f1 = f(x1), f2 = f(x2);
+    for (int i = 0; i < kRefineSteps; ++i) {
+        if (f1 < f2) {
+            c = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = c - g * (c - a);
+            f1 = f(x1);
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (c - a);
+            f2 = f(x2);
+        }
+    }
+    for (const auto& [u, v] : {std::pair{x1, f1}, std::pair{x2, f2}})
+        if (v < best) {
+            best = v;
+            bestU = u;
+        }
+    if (warpHint > 0.0 && std::isfinite(warpHint)) {
+        // The closed form is kept whenever it is within kHintTolerance of the best measured warp
+        // and no worse than SSM: the thesis' n where it works (sun perpendicular to the view:
+        // eq. 8.9 exactly), the measurement where it does not. Eq. 8.9 balances the error along
+        // the view only; the footprint here also counts the lateral texel axis, and measured at
+        // gamma = 90 deg its optimum lies 7-8% below eq. 8.9's value (tests/math, two views).
+        const double uHint = std::log1p(warpHint * depth);
+        const double v = worstFootprint(warpHint, samples, body, in.cx, depth);
+        if (v <= kHintTolerance * best && v <= r.uniformFootprint) {
+            best = v;
+            bestU = uHint;
+        }
+    }
+    r.warp = std::expm1(bestU) / depth;
+    r.worstFootprint = best;
+    return r;
+}
+
+}  // namespace shadowlab::detail

@@ -1,0 +1,49 @@
+#pragma once
+// The choice of LiSPSM's warp by measurement (beyond the thesis; issue 9). Eq. 8.11/8.13 give n
+// for an idealized view ray with P's near plane at the eye's; on ordinary views (a low sun ahead
+// of or behind the viewer, an eye far above the ground, interiors with a tiny near plane) that n
+// over-warps and the map loses to plain SSM (measured: p99 footprint > 1.5x SSM on 21% of random
+// views). Instead, the warp k = 1/n is chosen to minimize the largest texel footprint
+// (math/texel_footprint.h) over sample points of the visible, lit part of V n S between the
+// nearest and farthest visible depth. k = 0 *is* focused SSM in the same frame and is always a
+// candidate, so the choice never does worse than SSM on these samples.
+#include "math/light_space.h"
+
+namespace shadowlab::detail {
+
+struct WarpSearchInput {
+    const ViewFrustum& view;
+    const ShadowLight& light;
+    const Aabb& sceneBounds;
+    const LightSpace& ls;
+    const std::vector<glm::dvec3>& bodyVertices;  // B: what the fitted map must contain
+    const ConvexBody& visibleLit;                 // L n V n S (V n S for suns): where receivers can be
+    double zNearLs = 0.0;                         // B's nearest light-space z (P's near plane)
+    double cx = 0.0;                              // the projection centre's light-space x
+    double depthNear = 0.0, depthFar = 0.0;       // visible eye-depth range to sample
+};
+
+struct WarpSearchResult {
+    double warp = 0.0;            // k = 1/n; 0 = uniform
+    double worstFootprint = 0.0;  // the objective at `warp` (pixels per texel at a 1 x 1 map / image)
+    double uniformFootprint = 0.0;  // the objective at k = 0 (SSM)
+    int samples = 0;
+};
+
+// Receiver sample points with their normals: the vertices of the visible lit body between the
+// two depths, midpoints towards its centroid and the centroid, each with two normals (the bisector
+// of eye and light directions, and +y). Shared by the LiSPSM search and the PSM guard.
+struct ReceiverSample {
+    glm::dvec3 point{0.0}, normal{0.0, 1.0, 0.0};
+};
+std::vector<ReceiverSample> receiverSamples(const ViewFrustum& view, const ShadowLight& light,
+                                            const ConvexBody& visibleLit, double depthNear, double depthFar);
+// The largest texel footprint of a map over the samples (map and image of size 1: only ratios
+// between maps of the same view mean something).
+double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,
+                        const std::vector<ReceiverSample>& samples);
+
+// `warpHint`: a closed-form k (eq. 8.11/8.13) evaluated as a candidate too.
+WarpSearchResult searchWarp(const WarpSearchInput& in, double warpHint);
+
+}  // namespace shadowlab::detail
