@@ -59,6 +59,7 @@ Settings canonicalSettings(ShadowMethod method) {
     s.light.elevationDeg = 90.0;
     s.light.azimuthDeg = 0.0;
     s.psm.autoNear = false;  // the closed form's n is the eye's near plane
+    s.psm.guard = false;     // the bare PSM: with n = 0.1, f = 70 its far error ties SSM's near error
     s.lispsm.autoVirtualFar = false;
     s.lispsm.virtualFar = 0.0;  // the real far plane: eq. 8.9's z_f
     s.filter.filter = ShadowFilter::Nearest;

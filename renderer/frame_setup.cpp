@@ -121,6 +121,7 @@ ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, con
     // The polygon lists of B, V, S, P are for the wireframe overlays only; skip them otherwise.
     const OverlaySettings& o = settings.overlays;
     p.collectPolygons = o.observerInset || o.lightViewInset;
+    p.psmGuard = settings.psm.guard;
     p.lispsm.useBodyVector = settings.lispsm.useBodyVector;
     p.lispsm.overrideN = settings.lispsm.overrideN;
     p.lispsm.n = settings.lispsm.n;

@@ -181,6 +181,9 @@ bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
                             "Push the view's near plane to the nearest visible depth (a depth pre-pass) for the "
                             "PSM warp, as Stamminger & Drettakis 4.2 / 6 do by reading back the depth buffer: "
                             "post-perspective space degenerates with a tiny near plane.");
+    changed |= checkbox("fall back to SSM when worse", s.psm.guard,
+                        "Compare PSM's largest texel footprint over the visible receivers with the focused "
+                        "uniform map's and use the better map; the stats name the fallback and the ratio.");
     if (s.method != ShadowMethod::Psm) ImGui::TextDisabled("(read-outs of the PSM method)");
     readout("move-back", formatNumber(d.psmMoveBack),
             "How far the virtual camera is moved back along -view so every shadow caster is in front of it "

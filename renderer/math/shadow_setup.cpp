@@ -151,6 +151,8 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
             if (psm.ok) {
                 M = psm.matrix;
                 reverse = psm.reverse;
+            }
+            if (psm.ok && params.psmGuard) {
                 // The guard (Stamminger & Drettakis 6 name the hard cases; issue 9 measured PSM
                 // above 1.5x SSM's footprint on 2.5% of sun and 8% of spot views): compare the
                 // largest texel footprint over the visible receivers with the focused uniform
@@ -170,7 +172,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
                     M = uniform;
                     reverse = false;
                 }
-            } else {
+            } else if (!psm.ok) {
                 diag.fallback = "PSM: no shadow frustum from the post-perspective light contains B; focused SSM used";
                 M = ssm(bv);
                 reverse = false;

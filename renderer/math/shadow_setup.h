@@ -69,6 +69,9 @@ struct LispsmParams {
 struct ShadowParams {
     ShadowMethod method = ShadowMethod::Lispsm;
     LispsmParams lispsm;
+    // PSM: use the focused SSM where PSM's largest texel footprint over the visible receivers is
+    // worse (diagnostics.fallback says so). Off: the bare parameterization (closed-form checks).
+    bool psmGuard = true;
     // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
     bool collectPolygons = true;
 };

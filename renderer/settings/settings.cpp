@@ -45,7 +45,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg
                                    spotOuterConeDeg, spotRange, color, intensity, ambient, animateSun,
                                    sunDegreesPerSecond)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear, guard)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, blurStrength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OverlaySettings, shadowMapInset, lightViewInset, observerInset, drawB, drawV,
