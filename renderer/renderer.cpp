@@ -297,6 +297,9 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uLightCosInner", float(light.cosInner));
     program.set("uLightRange", float(light.range));
     program.set("uAmbient", float(s.light.ambient));
+    program.set("uHemisphereAmbient", s.display.hemisphereAmbient ? 1 : 0);
+    program.set("uExposure", float(std::exp2(s.display.exposureEv)));
+    program.set("uToneMapping", int(s.display.toneMapping));
 
     program.set("uShadowsEnabled", frame.shadowed ? 1 : 0);
     program.set("uUseBlurredTerm", useBlurredTerm ? 1 : 0);
@@ -354,6 +357,7 @@ void Renderer::blurPasses(const Frame& frame, FrameStats& stats) {
     program.use();
     program.set("uStrength", float(s.filter.blurStrength));
     program.set("uDepthDependent", s.filter.depthDependentBlur ? 1 : 0);
+    program.set("uEdgeAware", s.filter.edgeAwareBlur ? 1 : 0);
     program.set("uNearFar", glm::vec2(float(frame.view.zNear), float(frame.view.zFar)));
     glBindVertexArray(emptyVao_.id());
     glViewport(0, 0, vp.width, vp.height);
@@ -378,9 +382,20 @@ void Renderer::blurPasses(const Frame& frame, FrameStats& stats) {
     timedPasses_.push_back({stats.passes.size() - 1, &blurTimer_});
 }
 
-void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
+void Renderer::forwardPass(const Frame& viewFrame, FrameStats& stats) {
     const auto cpuStart = Clock::now();
     forwardTimer_.begin();
+    // Anti-aliasing (display.msaaSamples): draw into a multisampled target at its origin, resolve
+    // into the view afterwards. Raw measurement frames are never averaged.
+    const Viewport& view = viewFrame.viewport;
+    const bool msaa = viewFrame.settings.display.msaaSamples > 1 && viewFrame.settings.viewMode != ViewMode::AliasingErrorRaw;
+    Frame frame = viewFrame;
+    if (msaa) {
+        msaa_.ensure(view.width, view.height, viewFrame.settings.display.msaaSamples);
+        frame.viewport = Viewport{msaa_.framebuffer(), 0, 0, view.width, view.height};
+    } else {
+        msaa_.release();
+    }
     const Viewport& vp = frame.viewport;
     glBindFramebuffer(GL_FRAMEBUFFER, vp.framebuffer);
     glViewport(vp.x, vp.y, vp.width, vp.height);
@@ -429,6 +444,7 @@ void Renderer::forwardPass(const Frame& frame, FrameStats& stats) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glDisable(GL_SCISSOR_TEST);
+    if (msaa) msaa_.resolveInto(view.framebuffer, view.x, view.y);
     unbindPassResources({0, 1, 2});
     forwardTimer_.end();
     stats.passes.push_back({"forward", msSince(cpuStart), forwardTimer_.lastMs()});

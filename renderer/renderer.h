@@ -12,6 +12,7 @@
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "material_programs.h"
+#include "msaa_target.h"
 #include "measure_pass.h"
 #include "shadow_resources.h"
 #include "visible_depth.h"
@@ -111,6 +112,7 @@ private:
     ShadowMap shadowMap_;
     ShadowTermTargets termTargets_;
     VisibleDepthPrePass visibleDepth_;  // PSM auto near / LiSPSM auto z_f
+    MsaaTarget msaa_;  // the forward pass's multisampled target (display.msaaSamples > 1)
     ShadowSetup lastSetup_{};
     gl::Program measure_;  // built on first use
     MeasureTargets measureTargets_;

@@ -52,7 +52,7 @@ void ShadowTermTargets::ensure(int width, int height) {
     glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
     for (int i = 0; i < 2; ++i) {
         term_[i] = gl::createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(term_[i].id(), 1, GL_R8, width, height);
+        glTextureStorage2D(term_[i].id(), 1, GL_RGBA8, width, height);  // term + normal
         framebuffer_[i] = gl::createFramebuffer();
         glNamedFramebufferTexture(framebuffer_[i].id(), GL_COLOR_ATTACHMENT0, term_[i].id(), 0);
         if (i == 0) glNamedFramebufferTexture(framebuffer_[i].id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);

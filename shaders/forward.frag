@@ -15,6 +15,17 @@ out vec4 outColor;  // linear; the sRGB framebuffer encodes it
 
 #include "shadow_term.glsl"
 #include "aliasing_error.glsl"
+#include "tone_mapping.glsl"
+
+// N.L of the facet itself (from the screen-space derivatives of the position, turned to face the
+// viewer like the shading normal), not of the interpolated normal.
+float facetFacing(vec3 p) {
+    vec3 toLight;
+    incidentLight(p, toLight);
+    vec3 g = normalize(cross(dFdx(p), dFdy(p)));
+    if (dot(g, uCameraPosition - p) < 0.0) g = -g;
+    return dot(g, toLight);
+}
 
 void main() {
     vec4 albedo = baseColor(vTexcoord);
@@ -23,7 +34,8 @@ void main() {
     if (!gl_FrontFacing) n = -n;  // double-sided surfaces seen from behind
     float shadow = shadowTerm(vWorldPosition, n);
     if (uOutputMode == 2) {
-        outColor = vec4(shadow, 0.0, 0.0, 1.0);
+        // The term, and the normal for the edge-aware blur's weights.
+        outColor = vec4(shadow, n * 0.5 + 0.5);
         return;
     }
     if (uOutputMode >= 3) {
@@ -34,5 +46,6 @@ void main() {
         outColor = vec4(vec3(0.9) * (0.2 + 0.8 * shadow), 1.0);
         return;
     }
-    outColor = vec4(shade(albedo.rgb, vWorldPosition, n, shadow) + materialEmissive(), albedo.a);
+    vec3 lit = shade(albedo.rgb, vWorldPosition, n, facetFacing(vWorldPosition), shadow) + materialEmissive();
+    outColor = vec4(toneMap(lit), albedo.a);
 }

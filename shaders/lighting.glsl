@@ -8,7 +8,16 @@ uniform float uLightCosOuter;
 uniform float uLightCosInner;
 uniform float uLightRange;     // 0 = unlimited
 uniform float uAmbient;
+uniform bool uHemisphereAmbient;
 uniform vec3 uCameraPosition;
+
+// The global ambient term, never shadowed (thesis 6.2). As a hemisphere light (sky above, ground
+// below, same mean) surfaces in shadow keep their shape instead of one flat colour.
+vec3 ambientLight(vec3 n) {
+    if (!uHemisphereAmbient) return vec3(uAmbient);
+    const vec3 sky = vec3(1.15, 1.2, 1.3), ground = vec3(0.55, 0.5, 0.45);
+    return uAmbient * mix(ground, sky, 0.5 + 0.5 * n.y);
+}
 
 // Direction towards the light and the light's unshadowed radiance at p.
 vec3 incidentLight(vec3 p, out vec3 toLight) {
@@ -25,12 +34,18 @@ vec3 incidentLight(vec3 p, out vec3 toLight) {
     return uLightColor * attenuation;
 }
 
-vec3 shade(vec3 albedo, vec3 p, vec3 n, float shadow) {
+// `facing`: the facet's own (geometric) normal dotted with the direction to the light. On a facet
+// that faces away the shadow test is not applied: N.L of the interpolated normal already darkens
+// it towards the terminator (thesis 6.2: diffuse lighting is what hides the artefacts there), and
+// the map's depth of such a facet is its own, so the test would only add acne, the hatching seen
+// on the back facets of smooth-shaded canopies.
+vec3 shade(vec3 albedo, vec3 p, vec3 n, float facing, float shadow) {
     vec3 toLight;
     vec3 radiance = incidentLight(p, toLight);
+    if (facing <= 0.0) shadow = 1.0;
     vec3 toEye = normalize(uCameraPosition - p);
     float nDotL = max(dot(n, toLight), 0.0);
     vec3 h = normalize(toLight + toEye);
     float specular = nDotL > 0.0 ? pow(max(dot(n, h), 0.0), 48.0) * 0.25 : 0.0;
-    return albedo * uAmbient + (albedo * nDotL + vec3(specular)) * radiance * shadow;
+    return albedo * ambientLight(n) + (albedo * nDotL + vec3(specular)) * radiance * shadow;
 }

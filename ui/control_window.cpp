@@ -1,6 +1,7 @@
 // The control window: every panel as a collapsing section at the right edge, the view-state
 // panel and the captions over the 3D image. ImGui only.
 #include "accuracy_panel.h"
+#include "display_panel.h"
 #include "file_panel.h"
 #include "panels.h"
 #include "skip_panel.h"
@@ -74,6 +75,7 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
     if (ImGui::CollapsingHeader("Bias")) result.changed |= drawBiasPanel(s);
     if (ImGui::CollapsingHeader("Filter & blur")) result.changed |= drawFilterPanel(s);
     if (ImGui::CollapsingHeader("Light")) result.changed |= drawLightPanel(s, scene);
+    if (ImGui::CollapsingHeader("Display")) result.changed |= drawDisplayPanel(s);
     if (ImGui::CollapsingHeader("Camera")) result.changed |= drawCameraPanel(s, scene);
     if (ImGui::CollapsingHeader("Animation")) result.changed |= drawAnimationPanel(s, ctx.animation);
     if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen))

@@ -244,6 +244,10 @@ bool drawFilterPanel(Settings& s) {
                          "Separable eye-space blur of the shadow term, hiding projection aliasing and softening "
                          "shadow edges (thesis 6.3, 9.4.2). 0 = no blur pass at all.");
     ImGui::BeginDisabled(f.blurIterations == 0);
+    changed |= checkbox("edge-aware", f.edgeAwareBlur,
+                        "Weight each blur tap by depth and normal agreement (a cross-bilateral filter), so shadow "
+                        "does not bleed across silhouettes onto nearer or farther surfaces (halos around trunks). "
+                        "Off: the plain Gaussian of thesis 6.3.");
     changed |= checkbox("depth-dependent", f.depthDependentBlur,
                         "Shrink the blur kernel with depth so small distant shadows are not smeared (thesis 9.4.2).");
     changed |= sliderDouble("strength", f.blurStrength, 0.0, 8.0, "%.2f",

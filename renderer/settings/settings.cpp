@@ -40,6 +40,9 @@ NLOHMANN_JSON_SERIALIZE_ENUM(LightSource, {{LightSource::Scene, "scene"},
                                            {LightSource::Sun, "sun"},
                                            {LightSource::Spot, "spot"}})
 
+NLOHMANN_JSON_SERIALIZE_ENUM(ToneMapping, {{ToneMapping::None, "none"},
+                                           {ToneMapping::PbrNeutral, "pbr-neutral"},
+                                           {ToneMapping::Aces, "aces"}})
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraSettings, position, yawDeg, pitchDeg, fovYDeg, nearPlane, farPlane, moveSpeed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg, elevationDeg, spotPosition,
                                    spotOuterConeDeg, spotRange, color, intensity, ambient, animateSun,
@@ -47,7 +50,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear, guard)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, blurStrength)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, edgeAwareBlur,
+                                   blurStrength)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DisplaySettings, exposureEv, toneMapping, hemisphereAmbient, msaaSamples)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OverlaySettings, shadowMapInset, lightViewInset, observerInset, drawB, drawV,
                                    drawS, drawP)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
@@ -55,7 +60,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
                                    groupedDraws, shaderVariants)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
-                                   filter, overlays, compare, animation, skip)
+                                   filter, overlays, compare, animation, skip, display)
 
 namespace {
 
@@ -276,6 +281,17 @@ std::vector<std::string> sanitize(Settings& s) {
     }
     clampValue(s.animation.time, 0.0, 1e7, 0.0, "animation.time", changes);
     clampValue(s.animation.speed, -100.0, 100.0, 1.0, "animation.speed", changes);
+    clampValue(s.display.exposureEv, -16.0, 16.0, 0.0, "display.exposureEv", changes);
+    {
+        // MSAA sample counts every GL 4.5 implementation offers for colour (GL_MAX_SAMPLES >= 4)
+        // and most for 8; anything else is rounded to the next of 1, 2, 4, 8.
+        const int asked = s.display.msaaSamples;
+        const int samples = asked <= 1 ? 1 : asked <= 2 ? 2 : asked <= 4 ? 4 : 8;
+        if (samples != asked) {
+            changes.push_back("display.msaaSamples: " + std::to_string(asked) + " -> " + std::to_string(samples));
+            s.display.msaaSamples = samples;
+        }
+    }
     return changes;
 }
 

@@ -83,6 +83,9 @@ struct FilterSettings {
     ShadowFilter filter = ShadowFilter::Pcf2x2Hardware;
     int blurIterations = 0;          // eye-space blur passes (thesis 6.3, 9.4.2); 0 = none
     bool depthDependentBlur = false;  // wider kernel near the viewer
+    // Weights each tap by depth and normal similarity, so shadow does not bleed across silhouettes
+    // (halos around trunks); off = the plain Gaussian of thesis 6.3.
+    bool edgeAwareBlur = true;
     double blurStrength = 1.0;
     bool operator==(const FilterSettings&) const = default;
 };
@@ -122,6 +125,18 @@ struct SkipSettings {
     bool operator==(const SkipSettings&) const = default;
 };
 
+// Display of the lit view: exposure and tone mapping in linear space before the sRGB encode, the
+// ambient's shape, anti-aliasing. The shadow-term and error views skip exposure and
+// tone mapping (their values are measurements); "none" keeps the lit view linear for measuring too.
+enum class ToneMapping { None, PbrNeutral, Aces };
+struct DisplaySettings {
+    double exposureEv = 0.0;                          // x 2^EV before tone mapping
+    ToneMapping toneMapping = ToneMapping::PbrNeutral;  // Khronos PBR Neutral; ACES (Narkowicz' fit)
+    bool hemisphereAmbient = true;  // sky above, ground below: shadowed regions keep their shape
+    int msaaSamples = 1;            // 1 (off), 2, 4 or 8 for the lit view
+    bool operator==(const DisplaySettings&) const = default;
+};
+
 struct Settings {
     ShadowMethod method = ShadowMethod::Lispsm;
     int shadowMapSize = 2048;  // 256..8192
@@ -137,6 +152,7 @@ struct Settings {
     CompareSettings compare;
     AnimationSettings animation;
     SkipSettings skip;
+    DisplaySettings display;
     bool operator==(const Settings&) const = default;
 };
 

@@ -53,6 +53,8 @@ TEST_F(ForwardRender, OutputIsSrgbEncodedLinearShading) {
     Settings settings = frontView();
     settings.light.intensity = 0.0;
     settings.light.ambient = 0.5;
+    settings.display.toneMapping = ToneMapping::None;  // the linear output kept for measurements
+    settings.display.hemisphereAmbient = false;
     const RgbaImage image = render(scene, settings);
     const glm::ivec2 groundPoint = project(settings, {6.0, 0.0, 3.0});
     const glm::u8vec4 ground = image.at(groundPoint.x, groundPoint.y);
