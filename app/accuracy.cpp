@@ -156,7 +156,8 @@ RgbaImage mismatchImage(const std::vector<PixelVerdict>& verdicts, int width, in
         for (int x = 0; x < width; ++x) {
             glm::u8vec4 c{30, 30, 40, 255};  // not measured
             switch (verdicts[std::size_t(height - 1 - y) * width + x]) {
-                case PixelVerdict::Agree: c = {150, 150, 150, 255}; break;
+                case PixelVerdict::AgreeLit: c = {190, 190, 185, 255}; break;
+                case PixelVerdict::AgreeShadow: c = {95, 95, 100, 255}; break;
                 case PixelVerdict::FalseShadow: c = {230, 40, 30, 255}; break;
                 case PixelVerdict::FalseLight: c = {40, 90, 255, 255}; break;
                 case PixelVerdict::NotMeasured: break;

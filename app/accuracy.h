@@ -65,7 +65,8 @@ struct TemporalFigures {
 std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& scene, const Settings& settings,
                                                int width, int height, const RayScene& rays);
 
-// A colour per verdict (agree grey, false shadow red, false light blue), top row first.
+// A colour per verdict, top row first: agreeing light grey (lit) or dark grey (shadow), false
+// shadow red, false light blue, not a receiver near-black.
 RgbaImage mismatchImage(const std::vector<PixelVerdict>& verdicts, int width, int height);
 
 }  // namespace shadowlab::app

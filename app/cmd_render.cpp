@@ -28,6 +28,7 @@ struct RenderOptions {
     bool measure = false;
     std::string statsFile;  // --stats: the frame's figures as JSON
     bool truth = false;
+    std::string mismatchOut;  // --mismatch-out: the truth comparison as a picture
     SettingsOverrides overrides;
     std::vector<std::string> limits;  // --limit KEY=N load budgets
 };
@@ -40,7 +41,7 @@ struct RenderOptions {
 // Error against cost for one method: the frame time including the GPU's work (glFinish), the
 // texel footprint (thesis 8.2.1) over the lit-facing receivers, and with --truth the shadow
 // state against Embree rays (app/accuracy.h).
-void measureMethod(Renderer& renderer, const Scene& scene, const Settings& settings, const RenderTarget& target,
+AccuracyReport measureMethod(Renderer& renderer, const Scene& scene, const Settings& settings, const RenderTarget& target,
                    const RayScene* rays, bool header) {
     const Viewport viewport{target.framebuffer(), 0, 0, target.width(), target.height()};
     using Clock = std::chrono::steady_clock;
@@ -63,6 +64,7 @@ void measureMethod(Renderer& renderer, const Scene& scene, const Settings& setti
         std::printf("  %6.2f%% %12.2f%% %11.2f%% %7.3f", 100.0 * a.truth->eTotal, 100.0 * a.truth->falseShadow,
                     100.0 * a.truth->falseLight, a.truth->eEdge);
     std::printf("\n");
+    return a;
 }
 
 // The figures of the frame just rendered (the first method's), GPU times included.
@@ -111,6 +113,7 @@ void runRender(const RenderOptions& options) {
     image.height = options.height;
     image.pixels.assign(std::size_t(image.width) * image.height * 4, 0);
     RenderTarget target(options.width, options.height);
+    RgbaImage mismatches;  // --mismatch-out
     for (std::size_t i = 0; i < methods.size(); ++i) {
         Settings view = settings;
         view.method = methods[i];
@@ -121,10 +124,19 @@ void runRender(const RenderOptions& options) {
         if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
         image.blit(part, options.width * int(i), 0);
         if (!options.statsFile.empty() && i == 0) writeStats(*renderer, options.statsFile);
-        if (options.measure) measureMethod(*renderer, *scene, view, target, rays.get(), i == 0);
+        if (options.measure) {
+            const AccuracyReport a = measureMethod(*renderer, *scene, view, target, rays.get(), i == 0);
+            if (!options.mismatchOut.empty()) {
+                if (mismatches.pixels.empty()) mismatches = RgbaImage{image.width, image.height, image.pixels};
+                RgbaImage part = mismatchImage(a.verdicts, options.width, options.height);
+                if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
+                mismatches.blit(part, options.width * int(i), 0);
+            }
+        }
     }
     if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
     if (!writePng(image, options.out, error)) fail(error);
+    if (!options.mismatchOut.empty() && !writePng(mismatches, options.mismatchOut, error)) fail(error);
     std::cout << "wrote " << options.out << " (" << image.width << "x" << image.height << ", " << context->description()
               << ")\n";
 }
@@ -151,6 +163,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_flag("--truth", options->truth,
                   "with --measure: compare the shadow state with exact visibility (Embree rays): E_total, false "
                   "shadow, false light, E_edge");
+    cmd->add_option("--mismatch-out", options->mismatchOut,
+                    "with --measure --truth: write the mismatches as a PNG (light / dark grey: agree lit / in shadow; "
+                    "red false shadow, blue false light, near-black: not a lit-facing receiver)");
     cmd->callback([options] { runRender(*options); });
 }
 

@@ -156,7 +156,7 @@ AccuracyRequest drawAccuracyPanel(const AccuracyView& view, bool& groundTruth) {
                              ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
     }
     if (view.mismatchTexture != 0 && view.mismatchWidth > 0) {
-        ImGui::TextUnformatted("mismatches: red false shadow, blue false light");
+        ImGui::TextUnformatted("mismatches: red false shadow, blue false light\n(light / dark grey: agree lit / in shadow)");
         const float w = ImGui::GetContentRegionAvail().x;
         ImGui::Image(reinterpret_cast<ImTextureID>(view.mismatchTexture),
                      ImVec2(w, w * float(view.mismatchHeight) / float(view.mismatchWidth)));

@@ -14,7 +14,7 @@ ShadowComparison compareWithTruth(const ShadowStateFrame& f) {
             ++c.receivers;
             const bool renderedLit = f.shadowTerm[i] >= kLitThreshold;
             const bool truthLit = f.truthLit[i] != 0;
-            PixelVerdict v = PixelVerdict::Agree;
+            PixelVerdict v = truthLit ? PixelVerdict::AgreeLit : PixelVerdict::AgreeShadow;
             if (renderedLit != truthLit) v = truthLit ? PixelVerdict::FalseShadow : PixelVerdict::FalseLight;
             c.verdicts[i] = v;
             c.falseShadow += v == PixelVerdict::FalseShadow;

@@ -20,7 +20,7 @@ struct ShadowStateFrame {
     std::vector<std::uint8_t> truthLit;  // ray-cast visibility of the light, 1 lit
 };
 
-enum class PixelVerdict : std::uint8_t { NotMeasured, Agree, FalseShadow, FalseLight };
+enum class PixelVerdict : std::uint8_t { NotMeasured, AgreeLit, AgreeShadow, FalseShadow, FalseLight };
 
 struct ShadowComparison {
     std::size_t receivers = 0;

@@ -41,7 +41,8 @@ TEST(ShadowTruth, AcneIsFalseShadowAndLeakIsFalseLight) {
     EXPECT_DOUBLE_EQ(c.eEdge, 2.0 / 6.0);
     EXPECT_EQ(c.verdicts[0], PixelVerdict::FalseShadow);
     EXPECT_EQ(c.verdicts[3], PixelVerdict::FalseLight);
-    EXPECT_EQ(c.verdicts[7], PixelVerdict::Agree);
+    EXPECT_EQ(c.verdicts[7], PixelVerdict::AgreeShadow);
+    EXPECT_EQ(c.verdicts[1], PixelVerdict::AgreeLit);
 }
 
 TEST(ShadowTruth, NonReceiversAreNeitherCountedNorBoundaries) {
