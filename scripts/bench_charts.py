@@ -4,8 +4,9 @@
 usage: bench_charts.py RESULTS.json OUT_DIR
 
 Writes
-  error_vs_time.png   p99 texel footprint (pixels per texel) against GPU ms per frame, one marker
-                      per method, labelled by map size, one panel per view
+  error_vs_time.png   p99 texel footprint (pixels per texel; true normal, and bisector normal
+                      below) against GPU ms per frame, one marker per method, labelled by map
+                      size, one panel per view
   depth_curves.png    canonical validation: measured footprint per log-depth bin against the
                       closed forms of thesis 8.2 (SSM, PSM, LiSPSM), plus the logarithmic limit
   e_total.png         E_total (false shadow + false light) per method and case, when ground truth ran
@@ -31,24 +32,28 @@ def view_name(case):
 
 def error_vs_time(cases, out):
     views = sorted({view_name(c) for c in cases})
-    fig, axes = plt.subplots(1, max(1, len(views)), figsize=(5.5 * max(1, len(views)), 4.5), squeeze=False)
-    for ax, view in zip(axes[0], views):
-        for method in COLOURS:
-            rows = [c for c in cases if view_name(c) == view and c["method"] == method]
-            if not rows:
-                continue
-            # GPU time from timer queries; CPU frame time where the driver reports no GPU time.
-            xs = [c["gpuMsTotal"] if c["gpuMsTotal"] > 0 else c["frameMsMedian"] for c in rows]
-            ys = [c["footprint"]["p99"] for c in rows]
-            ax.plot(xs, ys, marker=MARKERS[method], color=COLOURS[method], linestyle="-", label=method)
-            for x, y, c in zip(xs, ys, rows):
-                ax.annotate(str(c["mapSize"]), (x, y), textcoords="offset points", xytext=(4, 4), fontsize=7)
-        ax.set_title(view, fontsize=9)
-        ax.set_xlabel("GPU ms per frame (CPU frame ms if no GPU timer)")
-        ax.set_ylabel("p99 texel footprint (pixels per texel)")
-        ax.set_yscale("log")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
+    columns = max(1, len(views))
+    fig, axes = plt.subplots(2, columns, figsize=(5.5 * columns, 8.5), squeeze=False)
+    # Row 0: the true footprint (what users see); row 1: the bisector footprint (perspective
+    # aliasing only: what a parameterisation can change).
+    for row, key, what in ((0, "footprint", "p99 footprint"), (1, "bisectorFootprint", "p99 bisector footprint")):
+        for ax, view in zip(axes[row], views):
+            for method in COLOURS:
+                rows = [c for c in cases if view_name(c) == view and c["method"] == method]
+                if not rows:
+                    continue
+                # GPU time from timer queries; CPU frame time where the driver reports no GPU time.
+                xs = [c["gpuMsTotal"] if c["gpuMsTotal"] > 0 else c["frameMsMedian"] for c in rows]
+                ys = [c[key]["p99"] for c in rows]
+                ax.plot(xs, ys, marker=MARKERS[method], color=COLOURS[method], linestyle="-", label=method)
+                for x, y, c in zip(xs, ys, rows):
+                    ax.annotate(str(c["mapSize"]), (x, y), textcoords="offset points", xytext=(4, 4), fontsize=7)
+            ax.set_title(view, fontsize=9)
+            ax.set_xlabel("GPU ms per frame (CPU frame ms if no GPU timer)")
+            ax.set_ylabel(f"{what} (pixels per texel)")
+            ax.set_yscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
     fig.suptitle("Error against run time (labels: map size)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "error_vs_time.png"), dpi=110)
