@@ -276,7 +276,7 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     static const Scene kNoScene{};
     ui::ControlContext ctx{&state.stats,    state.scene ? &*state.scene : &kNoScene, state.animation,
                            state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file,
-                           &state.accuracy.view, &state.accuracy.groundTruth};
+                           &state.accuracy.view, &state.accuracy.toggles};
     const ui::ControlResult controls = ui::drawControlWindow(state.settings, ctx, float(fbWidth), float(fbHeight));
     if (controls.changed) addNotices(state.status, sanitize(state.settings));
     if (controls.requests.save) {
@@ -439,6 +439,9 @@ void runViewer(const ViewerOptions& options) {
         ui::LoadingInfo loading;
         if (state.load) loading = {true, state.load->file(), state.load->secondsRunning(), state.uploadNext};
         ui::drawMessageToast(state.status, loading, 0.0f, float(layout.viewWidth));
+        if (state.scene && !layout.views.empty())
+            drawMismatchOverlay(state.accuracy, state.settings, float(layout.views[0].x), float(layout.views[0].y),
+                                float(layout.views[0].width), float(layout.views[0].height));
         if (state.showUi) {
             ui::drawCaptions(views.captions);
             state.status.compareLines = views.compareLines;

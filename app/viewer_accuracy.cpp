@@ -2,6 +2,8 @@
 
 #include "math/error_theory.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -82,6 +84,19 @@ void uploadMismatch(ViewerAccuracy& a, const RgbaImage& image) {
 
 }  // namespace
 
+void drawMismatchOverlay(const ViewerAccuracy& a, const Settings& settings, float x, float y, float width,
+                         float height) {
+    const Settings& m = a.measuredSettings;
+    // What the shadow state depends on (not overlays, compare layout or display settings).
+    const bool sameView = settings.camera == m.camera && settings.light == m.light && settings.method == m.method &&
+                          settings.shadowMapSize == m.shadowMapSize && settings.bias == m.bias &&
+                          settings.filter == m.filter && settings.lispsm == m.lispsm && settings.psm == m.psm &&
+                          settings.animation.time == m.animation.time;
+    if (!a.toggles.overlayMismatches || !a.mismatch || !sameView) return;
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(std::uintptr_t(a.mismatch.id())),
+                                             ImVec2(x, y), ImVec2(x + width, y + height));
+}
+
 void forgetScene(ViewerAccuracy& accuracy) {
     accuracy.rays.reset();
     accuracy.raysScene = nullptr;
@@ -96,11 +111,12 @@ void measureForPanel(ViewerAccuracy& a, Renderer& renderer, const Scene& scene, 
     const double scale = std::min({1.0, 1280.0 / std::max(1, width), 720.0 / std::max(1, height)});
     const int w = std::max(16, int(width * scale)), h = std::max(16, int(height * scale));
     std::string error;
-    if (a.groundTruth && (a.raysScene != &scene || !a.rays)) {
+    if (a.toggles.groundTruth && (a.raysScene != &scene || !a.rays)) {
         a.rays = RayScene::build(scene, error);
         a.raysScene = a.rays ? &scene : nullptr;
     }
-    const RayScene* rays = a.groundTruth ? a.rays.get() : nullptr;
+    const RayScene* rays = a.toggles.groundTruth ? a.rays.get() : nullptr;
+    a.measuredSettings = settings;
     ui::AccuracyView view;
     std::vector<ui::AccuracyCurve> measured;
     const ShadowLight light = truthLight(scene, settings, settings.animation.time);

@@ -12,8 +12,9 @@ namespace shadowlab::app {
 
 struct ViewerAccuracy {
     ui::AccuracyView view;
-    bool groundTruth = true;
+    ui::AccuracyToggles toggles;
     bool requested = false;
+    Settings measuredSettings;  // the mismatch view shows only while the view is still this one
     const Scene* raysScene = nullptr;  // the scene `rays` was built for
     std::unique_ptr<RayScene> rays;
     gl::Texture mismatch;  // the current method's mismatch picture
@@ -22,6 +23,11 @@ struct ViewerAccuracy {
 // Measures at width x height (capped at 1280 x 720). Leaves framebuffer 0 bound.
 void measureForPanel(ViewerAccuracy& accuracy, Renderer& renderer, const Scene& scene, const Settings& settings,
                      int width, int height);
+
+// The mismatch view: the current method's mismatch picture over the 3D view at (x, y) (top-left
+// origin, framebuffer pixels), while the toggle is on and the settings are the measured ones.
+void drawMismatchOverlay(const ViewerAccuracy& accuracy, const Settings& settings, float x, float y, float width,
+                         float height);
 
 // A new scene: the BVH and the figures belong to the old one.
 void forgetScene(ViewerAccuracy& accuracy);

@@ -135,11 +135,11 @@ void drawHeatLegend() {
                           "pixels (undersampled, jagged edges). Blue: texels wasted where no pixel needs them.");
 }
 
-AccuracyRequest drawAccuracyPanel(const AccuracyView& view, bool& groundTruth) {
+AccuracyRequest drawAccuracyPanel(const AccuracyView& view, AccuracyToggles& toggles) {
     AccuracyRequest request;
     request.measure = ImGui::Button("measure this view");
     ImGui::SameLine();
-    checkbox("ground truth", groundTruth,
+    checkbox("ground truth", toggles.groundTruth,
              "Also cast one Embree ray per receiver pixel toward the light (exact visibility) and compare the rendered "
              "shadow state: E_total, false shadow / light, E_edge. The BVH is built once per scene.");
     if (!view.status.empty()) ImGui::TextWrapped("%s", view.status.c_str());
@@ -156,6 +156,9 @@ AccuracyRequest drawAccuracyPanel(const AccuracyView& view, bool& groundTruth) {
                              ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
     }
     if (view.mismatchTexture != 0 && view.mismatchWidth > 0) {
+        checkbox("mismatch view", toggles.overlayMismatches,
+                 "Colour the 3D view by the comparison with the ground truth (red false shadow, blue false light, "
+                 "light / dark grey agree lit / in shadow) while the camera and settings are the measured ones.");
         ImGui::TextUnformatted("mismatches: red false shadow, blue false light\n(light / dark grey: agree lit / in shadow)");
         const float w = ImGui::GetContentRegionAvail().x;
         ImGui::Image(reinterpret_cast<ImTextureID>(view.mismatchTexture),

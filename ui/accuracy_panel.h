@@ -40,8 +40,11 @@ struct AccuracyView {
     int mismatchWidth = 0, mismatchHeight = 0;
 };
 
-// `groundTruth`: trace Embree rays too (seconds on big scenes); edited in place.
-AccuracyRequest drawAccuracyPanel(const AccuracyView& view, bool& groundTruth);
+struct AccuracyToggles {
+    bool groundTruth = true;         // trace Embree rays too (seconds on big scenes)
+    bool overlayMismatches = false;  // the mismatch view: colours over the 3D view while it is the measured one
+};
+AccuracyRequest drawAccuracyPanel(const AccuracyView& view, AccuracyToggles& toggles);
 
 // Colour bar of the aliasing heat map (shaders/aliasing_error.glsl): pixels per texel, log scale.
 void drawHeatLegend();

@@ -82,8 +82,8 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
         result.changed |= drawOverlayPanel(s, ctx.observer ? *ctx.observer : localObserver);
     if (ImGui::CollapsingHeader("Split compare")) result.changed |= drawComparePanel(s);
     if (ImGui::CollapsingHeader("Skips")) result.changed |= drawSkipPanel(s);
-    if (ctx.accuracy && ctx.accuracyGroundTruth && ImGui::CollapsingHeader("Accuracy"))
-        result.accuracy = drawAccuracyPanel(*ctx.accuracy, *ctx.accuracyGroundTruth);
+    if (ctx.accuracy && ctx.accuracyToggles && ImGui::CollapsingHeader("Accuracy"))
+        result.accuracy = drawAccuracyPanel(*ctx.accuracy, *ctx.accuracyToggles);
     if (ImGui::CollapsingHeader("View state", ImGuiTreeNodeFlags_DefaultOpen))
         result.requests = drawViewStatePanel(ctx.viewState ? *ctx.viewState : localViewState);
     if (result.requests.load) result.openFile = (ctx.viewState ? *ctx.viewState : localViewState).file;

@@ -65,6 +65,7 @@ ViewStateRequests drawViewStatePanel(ViewStateUi& ui);
 
 struct FileUi;
 struct AccuracyView;
+struct AccuracyToggles;
 struct AccuracyRequest {
     bool measure = false;
 };
@@ -79,7 +80,7 @@ struct ControlContext {
     ViewStateUi* viewState = nullptr;
     FileUi* file = nullptr;
     const AccuracyView* accuracy = nullptr;  // the accuracy panel's figures (ui/accuracy_panel.h)
-    bool* accuracyGroundTruth = nullptr;
+    AccuracyToggles* accuracyToggles = nullptr;
 };
 struct ControlResult {
     bool changed = false;
