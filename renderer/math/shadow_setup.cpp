@@ -63,7 +63,10 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         // light-facing plane that close to the apex: dropping one is conservative anyway).
         const glm::dvec3 axis = l;
         std::erase_if(out.bodyPlanes, [&](const glm::dvec4& p) {
-            const double depth = p.w - glm::dot(axis, light.position);  // plane: axis . x = p.w
+            // The light's distance to the plane, with the plane's own normal: with the axis in
+            // its place the error is |n + axis| |position|, which at 7e4 from the origin let a
+            // cap survive and cull casters between the apex and L's near plane (issue 9).
+            const double depth = glm::dot(glm::dvec3(p), light.position) + p.w;
             return glm::dot(glm::dvec3(p), -axis) > 1.0 - 1e-6 && depth <= 2.0 * spotF.nearPlane;
         });
         out.bodyBounds.extend(light.position);

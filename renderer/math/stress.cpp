@@ -168,7 +168,7 @@ StressReport runStress(const StressOptions& options) {
         ms.method = m;
         report.methods.push_back(ms);
     }
-    for (std::uint64_t i = 0; i < options.cases; ++i) {
+    for (std::uint64_t i = options.firstCase; i < options.firstCase + options.cases; ++i) {
         Rng r(mix(options.seed * 0x100000001B3ull + i));
         const Case c = makeCase(r);
         ++report.cases;

@@ -18,6 +18,7 @@ namespace shadowlab {
 struct StressOptions {
     std::uint64_t cases = 1000;
     std::uint64_t seed = 1;
+    std::uint64_t firstCase = 0;     // run cases [firstCase, firstCase + cases): rerun one found case alone
     int samplesPerCase = 8;          // random points of V n S tested against B
     double clipTolerance = 1e-4;     // on x/w, y/w, z/w
 };

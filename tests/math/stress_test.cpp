@@ -28,6 +28,20 @@ TEST(ShadowStress, RandomConfigurationsHaveNoNanAndContainB) {
     EXPECT_TRUE(report.passed());
 }
 
+// Issue 9, defect 5: a spot light ~7e4 from the origin whose near cap plane was matched with the
+// light axis instead of its own normal, so the cap survived in culling and a caster between the
+// apex and L's near plane was culled (seed 1, case 122134 of 200,000).
+TEST(ShadowStress, SpotCapFarFromTheOriginKeepsCastersNearTheApex) {
+    StressOptions options;
+    options.seed = 1;
+    options.firstCase = 122134;
+    options.cases = 1;
+    options.samplesPerCase = 8;
+    const StressReport report = runStress(options);
+    EXPECT_EQ(report.cullingFailures, 0u) << report.text();
+    EXPECT_TRUE(report.passed()) << report.text();
+}
+
 TEST(ShadowStress, SameSeedSameReport) {
     StressOptions options;
     options.cases = 200;
