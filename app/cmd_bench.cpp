@@ -71,21 +71,8 @@ private:
 bool viewSettings(const Scene& scene, const BenchCamera& camera, Settings& settings, std::string& error) {
     settings = initialSettings(scene);
     if (camera.viewFile) return applyOverrides(settings, SettingsOverrides{camera.name, "", {}}, error);
-    int index = camera.index;
-    if (index < 0 && !camera.name.empty()) {
-        for (std::size_t i = 0; i < scene.cameras.size(); ++i)
-            if (scene.cameras[i].name == camera.name) index = int(i);
-        if (index < 0) {
-            error = "no camera named '" + camera.name + "' in the scene";
-            return false;
-        }
-    }
-    if (index >= int(scene.cameras.size())) {
-        error = "camera index " + std::to_string(index) + " but the scene has " + std::to_string(scene.cameras.size());
-        return false;
-    }
-    if (index >= 0) settings.camera = cameraFromScene(scene.cameras[std::size_t(index)], settings.camera);
-    return true;
+    if (camera.index >= 0) return applySceneCamera(scene, camera.index, settings, error);
+    return camera.name.empty() || applySceneCamera(scene, camera.name, settings, error);
 }
 
 // Timing: `warmup` frames, then `repeats` frames each followed by glFinish and the resolve of

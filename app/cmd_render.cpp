@@ -27,6 +27,7 @@ struct RenderOptions {
     int height = 720;
     bool measure = false;
     std::string statsFile;  // --stats: the frame's figures as JSON
+    std::string camera;     // --camera NAME|INDEX
     bool truth = false;
     std::string mismatchOut;  // --mismatch-out: the truth comparison as a picture
     SettingsOverrides overrides;
@@ -83,6 +84,7 @@ void runRender(const RenderOptions& options) {
     std::optional<Scene> scene = loadSceneReporting(options.scene, load);
     if (!scene) throw CLI::RuntimeError(1);
     Settings settings = initialSettings(*scene);
+    if (!options.camera.empty() && !applySceneCamera(*scene, options.camera, settings, error)) fail(error);
     if (!applyOverrides(settings, options.overrides, error)) fail(error);
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
         fail("--width/--height must be between 16 and 16384");
@@ -151,6 +153,8 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--width", options->width, "image width in pixels")->capture_default_str();
     cmd->add_option("--height", options->height, "image height in pixels")->capture_default_str();
     cmd->add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
+    cmd->add_option("--camera", options->camera,
+                    "the scene's glTF camera to render from, by name or 0-based index (before --view and --set)");
     cmd->add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm, lispsm, or all (side by side)");
     cmd->add_option("--set", options->overrides.sets, "a setting as key=value, e.g. bias.mode=slope (repeatable)");
     cmd->add_option("--stats", options->statsFile,

@@ -30,6 +30,29 @@ Settings initialSettings(const Scene& scene) {
     return settings;
 }
 
+bool applySceneCamera(const Scene& scene, int index, Settings& settings, std::string& error) {
+    if (index < 0 || std::size_t(index) >= scene.cameras.size()) {
+        error = "camera index " + std::to_string(index) + " but the scene has " + std::to_string(scene.cameras.size()) +
+                " camera(s)";
+        return false;
+    }
+    settings.camera = cameraFromScene(scene.cameras[std::size_t(index)], settings.camera);
+    return true;
+}
+
+bool applySceneCamera(const Scene& scene, const std::string& nameOrIndex, Settings& settings, std::string& error) {
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        if (scene.cameras[i].name == nameOrIndex) return applySceneCamera(scene, int(i), settings, error);
+    const bool digits = !nameOrIndex.empty() && nameOrIndex.size() < 10 &&
+                        nameOrIndex.find_first_not_of("0123456789") == std::string::npos;
+    if (digits) return applySceneCamera(scene, std::stoi(nameOrIndex), settings, error);
+    std::string names;
+    for (const auto& c : scene.cameras) names += (names.empty() ? "" : ", ") + (c.name.empty() ? "(unnamed)" : c.name);
+    error = "no camera named '" + nameOrIndex.substr(0, 80) + "' in the scene (cameras: " +
+            (names.empty() ? "none" : names.substr(0, 400)) + ")";
+    return false;
+}
+
 bool readTextFile(const std::string& file, std::string& text, std::string& error) {
     std::ifstream in(file, std::ios::binary);
     if (!in) {

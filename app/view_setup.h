@@ -19,6 +19,10 @@ std::optional<Scene> loadSceneReporting(const std::string& file, const LoadOptio
 // Settings for the first view of a scene: the first glTF camera (or the framing camera).
 Settings initialSettings(const Scene& scene);
 
+// The scene camera NAME, or INDEX (0-based) when the text is a number, into settings.camera.
+bool applySceneCamera(const Scene& scene, const std::string& nameOrIndex, Settings& settings, std::string& error);
+bool applySceneCamera(const Scene& scene, int index, Settings& settings, std::string& error);
+
 struct SettingsOverrides {
     std::string viewFile;              // --view VIEW.json
     std::string method;                // --method
