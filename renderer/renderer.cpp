@@ -1,6 +1,8 @@
 #include "renderer.h"
 #include "renderer_frame.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <initializer_list>
@@ -9,6 +11,14 @@
 namespace shadowlab {
 
 namespace {
+
+// shaders/shadow_clip.glsl: the matrix relative to the camera (rounded to float, so that the
+// shader's p - uShadowOrigin is exact for nearby p), composed in double.
+void setShadowClip(const gl::Program& program, const glm::dmat4& worldToClip, const glm::dvec3& eye) {
+    const glm::dvec3 origin{glm::vec3(eye)};
+    program.set("uWorldToShadowClip", glm::mat4(worldToClip * glm::translate(glm::dmat4(1.0), origin)));
+    program.set("uShadowOrigin", glm::vec3(origin));
+}
 
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
@@ -225,7 +235,7 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.sceneVersion = sceneVersion_;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
-            p.set("uWorldToShadowClip", glm::mat4(viewProjection));
+            setShadowClip(p, viewProjection, frame.view.eye);
         });
         drawScene(programs, frame, frame.visible, false, stats.depthPrePass);
     };
@@ -260,7 +270,7 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
 
     const bool slope = s.bias.mode == DepthOffset::SlopeScale;
     auto setup = [&](const gl::Program& program) {
-        program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
+        setShadowClip(program, frame.worldToShadowClip, frame.view.eye);
         program.set("uSlopeFactor", slope ? float(s.bias.slopeFactor) : 0.0f);
         program.set("uSlopeUnits", slope ? float(s.bias.slopeUnits) : 0.0f);
         program.set("uLinearRadial", frame.linear.radial ? 1 : 0);
@@ -286,7 +296,9 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
 
 void Renderer::setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const {
     const Settings& s = frame.settings;
-    program.set("uViewProjection", glm::mat4(frame.viewProjection));
+    const glm::dvec3 origin{glm::vec3(frame.view.eye)};  // as in setShadowClip
+    program.set("uViewProjection", glm::mat4(frame.viewProjection * glm::translate(glm::dmat4(1.0), origin)));
+    program.set("uViewOrigin", glm::vec3(origin));
     program.set("uCameraPosition", glm::vec3(frame.view.eye));
     const LightFrame& light = frame.light;
     program.set("uLightType", int(light.type));
@@ -305,7 +317,7 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uUseBlurredTerm", useBlurredTerm ? 1 : 0);
     glProgramUniform2i(program.id(), program.location("uViewportOrigin"), frame.viewport.x, frame.viewport.y);
     if (!frame.shadowed) return;
-    program.set("uWorldToShadowClip", glm::mat4(frame.worldToShadowClip));
+    setShadowClip(program, frame.worldToShadowClip, frame.view.eye);
     program.set("uReverseDepth", frame.reversedDepth ? 1 : 0);
     program.set("uLinearDepth", frame.linearDepth ? 1 : 0);
     program.set("uLinearRadial", frame.linear.radial ? 1 : 0);

@@ -11,7 +11,7 @@ vec3 aliasingColour(float log2Error) {
 }
 
 vec4 aliasingErrorOutput(vec3 p, bool raw) {
-    vec4 clip = uWorldToShadowClip * vec4(p, 1.0);
+    vec4 clip = worldToShadowClip(p);
     vec2 texel = (clip.xy / clip.w * 0.5 + 0.5) / uShadowTexel;
     mat2 J = mat2(dFdx(texel), dFdy(texel));
     // Singular values of a 2x2 matrix: sigma^2 = (F -+ sqrt(F^2 - 4 det^2)) / 2, F = |J|_F^2.

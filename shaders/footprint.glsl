@@ -21,7 +21,7 @@ vec2 texelDifferential(vec4 clip, vec3 dq) {
 
 // 0 where nothing is measured (outside the map, grazing plane, degenerate projection).
 float texelFootprint(vec3 p, vec3 n) {
-    vec4 clip = uWorldToShadowClip * vec4(p, 1.0);
+    vec4 clip = worldToShadowClip(p);
     if (!(abs(clip.w) > 1e-20) || any(greaterThan(abs(clip.xy / clip.w), vec2(1.0)))) return 0.0;
     vec3 d = p - uEye;
     float z = dot(d, uViewForward);

@@ -1,7 +1,9 @@
 #version 450 core
 #include "scene_vertex.glsl"
 
+// Relative to the camera, like shaders/shadow_clip.glsl: uViewProjection is VP * translate(uViewOrigin).
 uniform mat4 uViewProjection;
+uniform vec3 uViewOrigin;
 
 out vec3 vWorldPosition;
 out vec3 vWorldNormal;
@@ -12,5 +14,5 @@ void main() {
     vWorldPosition = world.xyz;
     vWorldNormal = instanceNormalMatrix() * inNormal;
     vTexcoord = inTexcoord;
-    gl_Position = uViewProjection * world;
+    gl_Position = uViewProjection * vec4(world.xyz - uViewOrigin, 1.0);
 }

@@ -3,7 +3,7 @@
 #include "scene_vertex.glsl"
 #include "linear_depth.glsl"
 
-uniform mat4 uWorldToShadowClip;
+#include "shadow_clip.glsl"
 
 out vec2 vTexcoord;
 #ifdef LINEAR_DEPTH
@@ -16,7 +16,7 @@ out float vLinearDepth;
 void main() {
     vec4 world = instanceWorld() * vec4(inPosition, 1.0);
     vTexcoord = inTexcoord;
-    gl_Position = uWorldToShadowClip * world;
+    gl_Position = worldToShadowClip(world.xyz);
 #ifdef LINEAR_DEPTH
     vLinearDepth = linearDepth(world.xyz);
 #endif

@@ -4,7 +4,7 @@
 #include "linear_depth.glsl"
 
 uniform bool uShadowsEnabled;
-uniform mat4 uWorldToShadowClip;
+#include "shadow_clip.glsl"
 uniform bool uReverseDepth;      // inverted PSM light: larger depth is nearer the light
 uniform bool uLinearDepth;
 uniform int uShadowFilter;       // 0 nearest, 1 hardware 2x2 PCF, 2 3x3 PCF, 3 4x4 PCF
@@ -19,7 +19,7 @@ layout(binding = 2) uniform sampler2D uBlurredTerm;
 float shadowTerm(vec3 p, vec3 n) {
     if (uUseBlurredTerm) return texelFetch(uBlurredTerm, ivec2(gl_FragCoord.xy) - uViewportOrigin, 0).r;
     if (!uShadowsEnabled) return 1.0;
-    vec4 clip = uWorldToShadowClip * vec4(p, 1.0);
+    vec4 clip = worldToShadowClip(p);
     if (abs(clip.w) < 1e-20) return 1.0;
     vec3 ndc = clip.xyz / clip.w;
     // Outside the focused light frustum there is no visible receiver (B holds them all).
