@@ -15,8 +15,10 @@
 #include "commands.h"
 #include "file_panel.h"
 #include "gl/debug_output.h"
+#include "png_text.h"
 #include "render_target.h"
 #include "scene_loading.h"
+#include "screen_overlays.h"
 #include "scenes/animation.h"
 #include "stats_panel.h"
 #include "view_setup.h"
@@ -99,6 +101,8 @@ struct ViewerState {
     bool screenshotRequested = false;
     double posedTime = 0.0;
     FrameStats stats;
+    std::vector<FrameStats> paneStats;  // per split view, left to right
+    bool splitShown = false;            // split compare was on last frame
     CameraController controller;
     FlyKeys fly;
     DragTracker drag;
@@ -277,6 +281,12 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     ui::ControlContext ctx{&state.stats,    state.scene ? &*state.scene : &kNoScene, state.animation,
                            state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file,
                            &state.accuracy.view, &state.accuracy.toggles};
+    // Split compare: the read-outs of the view that shows the method, not of the left view.
+    const std::vector<ShadowMethod> shown = ui::shownMethods(state.settings);
+    for (std::size_t i = 0; i < shown.size() && i < state.paneStats.size(); ++i) {
+        if (shown[i] == ShadowMethod::Lispsm && !ctx.lispsmStats) ctx.lispsmStats = &state.paneStats[i];
+        if (shown[i] == ShadowMethod::Psm && !ctx.psmStats) ctx.psmStats = &state.paneStats[i];
+    }
     const ui::ControlResult controls = ui::drawControlWindow(state.settings, ctx, float(fbWidth), float(fbHeight));
     if (controls.changed) addNotices(state.status, sanitize(state.settings));
     if (controls.requests.save) {
@@ -292,14 +302,23 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     if (controls.accuracy.measure) state.accuracy.requested = true;
 }
 
-void saveScreenshot(ViewerState& state, const std::string& file, int fbWidth, int fbHeight) {
-    RgbaImage shot = readFramebuffer(0, 0, 0, fbWidth, fbHeight);
+// A screenshot carries the settings it was rendered with in a PNG tEXt chunk (renderer/png_text.h)
+// and, when `jsonBeside`, as FILE.json next to it: dropping it on the viewer or `shadowlab render
+// --view shot.png` reproduces the image.
+void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string& file, bool jsonBeside) {
     std::string error;
     state.status.lastError.clear();
-    if (writePng(shot, file, error))
-        state.status.lastMessage = "saved " + file;
-    else
+    const std::string json = toJsonText(state.settings);
+    if (!writePng(shot, file, error) || !addPngTextToFile(file, kSettingsPngKeyword, json, error)) {
         state.status.lastError = error;
+    } else {
+        state.status.lastMessage = "saved " + file + " (settings embedded)";
+        if (jsonBeside) {
+            const std::string beside = std::filesystem::path(file).replace_extension(".json").string();
+            if (writeTextFile(beside, json, error)) state.status.lastMessage += " and " + beside;
+            else state.status.lastError = error;
+        }
+    }
     std::cerr << "shadowlab: " << (state.status.lastError.empty() ? state.status.lastMessage : state.status.lastError)
               << "\n";
 }
@@ -383,7 +402,8 @@ void runViewer(const ViewerOptions& options) {
         // Idle: wait for an event (a load finishing posts one) instead of redrawing an unchanged
         // frame; a software rasteriser would spend a whole core on it.
         const bool continuous = options.frames > 0 || animating(state) || state.fly.anyHeld() ||
-                                state.drag.target() != DragTarget::None || state.uploadNext;
+                                state.drag.target() != DragTarget::None || state.uploadNext ||
+                                renderer->readbackPending();  // the visible-depth result arrives next frame
         if (continuous || framesOwed > 0) glfwPollEvents();
         else if (state.load) glfwWaitEventsTimeout(0.1);  // the progress bar moves
         else glfwWaitEvents();
@@ -425,8 +445,9 @@ void runViewer(const ViewerOptions& options) {
         if (state.scene && fbWidth > 0 && fbHeight > 0) {
             advanceClock(state, *renderer, dt);
             views = drawViews({*renderer, *overlays, sectionTimer}, *state.scene, state.settings, layout,
-                              state.observer);
+                              state.observer, toFramebuffer(window.get(), state.drag.cursor()));
             state.stats = views.stats;
+            state.paneStats = views.paneStats;
             if (std::exchange(state.accuracy.requested, false))
                 measureForPanel(state.accuracy, *renderer, *state.scene, state.settings, layout.views[0].width,
                                 layout.views[0].height);
@@ -439,11 +460,21 @@ void runViewer(const ViewerOptions& options) {
         ui::LoadingInfo loading;
         if (state.load) loading = {true, state.load->file(), state.load->secondsRunning(), state.uploadNext};
         ui::drawMessageToast(state.status, loading, 0.0f, float(layout.viewWidth));
+        // F12 without panels: the rendered 3D area as it is now, before any ImGui drawing.
+        std::optional<RgbaImage> bareShot;
+        if (state.screenshotRequested && !state.viewState.screenshotPanels && fbWidth > 0 && fbHeight > 0)
+            bareShot = readFramebuffer(0, 0, 0, layout.viewWidth, fbHeight);
+        // Captions (method names, inset titles, error numbers) belong to the image: they stay with F1.
+        addErrorCaptions(views, layout, toFramebuffer(window.get(), state.drag.cursor()), views.captions);
+        ui::drawCaptions(views.captions);
+        if (state.settings.viewMode == ViewMode::AliasingError) ui::drawHeatLegendWindow(float(layout.viewWidth));
         if (state.scene && !layout.views.empty())
             drawMismatchOverlay(state.accuracy, state.settings, float(layout.views[0].x), float(layout.views[0].y),
                                 float(layout.views[0].width), float(layout.views[0].height));
         if (state.showUi) {
-            ui::drawCaptions(views.captions);
+            // Split compare began: fold the stats window so it does not cover the left view.
+            state.status.collapseStats = views.paneStats.size() > 1 && std::exchange(state.splitShown, true) == false;
+            if (views.paneStats.size() <= 1) state.splitShown = false;
             state.status.compareLines = views.compareLines;
             ui::drawStatsPanel(state.stats, fps, frameCpuMs, state.status);
         }
@@ -453,14 +484,11 @@ void runViewer(const ViewerOptions& options) {
         // --frames counts frames of a scene (or of the error, when none could be loaded).
         const bool counting = options.frames > 0 && !state.load && !state.uploadNext;
         const bool lastFrame = counting && frame + 1 >= options.frames;
-        if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
-            saveScreenshot(state,
-                           lastFrame && !options.screenshot.empty()
-                               ? options.screenshot
-                               : ui::screenshotFileName(state.settings, std::time(nullptr)),
-                           fbWidth, fbHeight);
-            state.screenshotRequested = false;
-        }
+        if (lastFrame && !options.screenshot.empty())  // --screenshot: the window as shown, panels and all
+            saveScreenshot(state, readFramebuffer(0, 0, 0, fbWidth, fbHeight), options.screenshot, false);
+        if (std::exchange(state.screenshotRequested, false))
+            saveScreenshot(state, bareShot ? *bareShot : readFramebuffer(0, 0, 0, fbWidth, fbHeight),
+                           ui::screenshotFileName(state.settings, std::time(nullptr)), true);
         glfwSwapBuffers(window.get());
         if (!(state.settings == before)) framesOwed = kSettleFrames;
         framesOwed = std::max(0, framesOwed - 1);

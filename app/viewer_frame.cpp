@@ -93,10 +93,40 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
     }
 }
 
+PaneError paneError(const MeasureFrame& measured, const InsetRect& pane, const glm::dvec2& cursor) {
+    PaneError e;
+    e.stats = footprintStats(measured.footprint);
+    if (contains(pane, cursor.x, cursor.y) && measured.width == pane.width && measured.height == pane.height) {
+        const int x = int(cursor.x) - pane.x;
+        const int row = pane.height - 1 - (int(cursor.y) - pane.y);  // MeasureFrame rows are bottom-up
+        e.cursorInside = true;
+        e.cursorValue = measured.footprint[std::size_t(row) * std::size_t(pane.width) + std::size_t(x)];
+    }
+    return e;
+}
+
 }  // namespace
 
+void addErrorCaptions(const ViewsResult& views, const Layout& layout, const glm::dvec2& cursor,
+                      std::vector<ui::Caption>& captions) {
+    for (std::size_t i = 0; i < views.errors.size() && i < layout.views.size(); ++i) {
+        const PaneError& e = views.errors[i];
+        const InsetRect& pane = layout.views[i];
+        const std::string line = e.stats.measuredPixels == 0
+                                     ? std::string("no receivers measured")
+                                     : "px/texel  median " + ui::formatNumber(e.stats.median, 3) + "  p95 " +
+                                           ui::formatNumber(e.stats.p95, 3) + "  >1: " +
+                                           ui::formatNumber(100.0 * e.stats.undersampledFraction, 3) + "%";
+        captions.push_back({float(pane.x + 8), float(pane.y + pane.height - 24), line});
+        if (e.cursorInside)
+            captions.push_back({float(cursor.x + 14), float(cursor.y + 10),
+                                e.cursorValue > 0.0f ? ui::formatNumber(e.cursorValue, 3) + " px/texel"
+                                                     : std::string("not measured")});
+    }
+}
+
 ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
-                      const ui::ObserverView& observer) {
+                      const ui::ObserverView& observer, const glm::dvec2& cursor) {
     ViewsResult result;
     const int fbHeight = layout.fbHeight;
     const double seconds = settings.animation.time;
@@ -108,12 +138,22 @@ ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& sett
     // Right to left, so the left view (whose shadow map and setup the insets show) is rendered last.
     const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
     result.paneStats.resize(methods.size());
+    if (settings.viewMode == ViewMode::AliasingError) result.errors.resize(methods.size());
     for (int i = int(methods.size()) - 1; i >= 0; --i) {
         Settings view = settings;
         view.method = methods[std::size_t(i)];
         const InsetRect r = toGl(layout.views[std::size_t(i)], fbHeight);
         tools.timer.begin(i);
-        FrameStats viewStats = tools.renderer.render(scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
+        FrameStats viewStats;
+        if (settings.viewMode == ViewMode::AliasingError) {
+            // The heat map and, from the same frame, the float footprint per pixel for the numbers.
+            MeasureFrame measured;
+            viewStats = tools.renderer.renderMeasured(scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height},
+                                                      measured);
+            result.errors[std::size_t(i)] = paneError(measured, layout.views[std::size_t(i)], cursor);
+        } else {
+            viewStats = tools.renderer.render(scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
+        }
         tools.timer.end(i);
         if (methods.size() > 1) {
             result.captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, methodName(view.method)});

@@ -1,6 +1,7 @@
 #pragma once
 // One frame of the viewer's 3D area: where the split views and insets go (Layout), and drawing
 // them with the Renderer and the OverlayRenderer. The ImGui panels are drawn elsewhere.
+#include "aliasing_stats.h"
 #include "overlay.h"
 #include "overlay_timer.h"
 #include "panels.h"
@@ -24,8 +25,17 @@ InsetRect toGl(const InsetRect& r, int fbHeight);
 bool contains(const InsetRect& r, double x, double y);
 Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings);
 
+// The aliasing error of one split view, live while the aliasing view is on (item "numbers on
+// screen"): the texel-footprint statistics of its measured receivers and the value under the cursor.
+struct PaneError {
+    AliasingStats stats;
+    bool cursorInside = false;
+    float cursorValue = 0.0f;  // pixels per texel; 0 = no receiver measured there
+};
+
 // What one frame of views reports back to the panels.
 struct ViewsResult {
+    std::vector<PaneError> errors;         // per split view, only in ViewMode::AliasingError
     FrameStats stats;                      // the left view's (its setup is what the insets show)
     std::vector<FrameStats> paneStats;     // one per split view, left to right
     std::vector<ui::Caption> captions;     // method names over split views, inset titles
@@ -42,8 +52,13 @@ struct FrameTools {
     SectionTimer& timer;
 };
 
-// Clears the window and draws every split view and the switched-on insets.
+// Clears the window and draws every split view and the switched-on insets. `cursor`: framebuffer
+// pixels, top-left origin (for the error read-out under it).
 ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
-                      const ui::ObserverView& observer);
+                      const ui::ObserverView& observer, const glm::dvec2& cursor);
+
+// Captions with each pane's error statistics and the value under the cursor.
+void addErrorCaptions(const ViewsResult& views, const Layout& layout, const glm::dvec2& cursor,
+                      std::vector<ui::Caption>& captions);
 
 }  // namespace shadowlab::app

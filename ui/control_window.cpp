@@ -27,7 +27,11 @@ ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
     ImGui::SameLine();
     r.screenshot = ImGui::Button("screenshot (F12)");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png (window with panels) in the working directory.");
+        ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png in the working directory: the rendered image with "
+                          "its settings embedded (and beside it as .json). Drop it on the viewer or pass it to "
+                          "`shadowlab render --view` to reproduce it.");
+    ImGui::SameLine();
+    ImGui::Checkbox("with panels", &ui.screenshotPanels);
     if (ImGui::TreeNode("keys and mouse")) {
         ImGui::TextUnformatted(
             "left drag: look\n"
@@ -70,8 +74,9 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
     if (ctx.file && ImGui::CollapsingHeader("File")) result.openFile = drawFilePanel(*ctx.file);
     if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) result.changed |= drawMethodPanel(s, stats);
     if (ImGui::CollapsingHeader("LiSPSM", s.method == ShadowMethod::Lispsm ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-        result.changed |= drawLispsmPanel(s, stats.shadow, ctx.autoVirtualFar);
-    if (ImGui::CollapsingHeader("PSM")) result.changed |= drawPsmPanel(s, stats.shadow);
+        result.changed |= drawLispsmPanel(s, (ctx.lispsmStats ? *ctx.lispsmStats : stats).shadow,
+                                          ctx.lispsmStats ? ctx.lispsmStats->virtualFarUsed : ctx.autoVirtualFar);
+    if (ImGui::CollapsingHeader("PSM")) result.changed |= drawPsmPanel(s, (ctx.psmStats ? *ctx.psmStats : stats).shadow);
     if (ImGui::CollapsingHeader("Bias")) result.changed |= drawBiasPanel(s);
     if (ImGui::CollapsingHeader("Filter & blur")) result.changed |= drawFilterPanel(s);
     if (ImGui::CollapsingHeader("Light")) result.changed |= drawLightPanel(s, scene);

@@ -59,6 +59,7 @@ struct ViewStateRequests {
 };
 struct ViewStateUi {
     char file[512] = "view.json";
+    bool screenshotPanels = false;  // F12 saves the window with its panels, not only the rendered image
 };
 // View state panel: save / load the JSON that `shadowlab render --view` takes; screenshot.
 ViewStateRequests drawViewStatePanel(ViewStateUi& ui);
@@ -81,6 +82,10 @@ struct ControlContext {
     FileUi* file = nullptr;
     const AccuracyView* accuracy = nullptr;  // the accuracy panel's figures (ui/accuracy_panel.h)
     AccuracyToggles* accuracyToggles = nullptr;
+    // In split compare: the stats of the view that shows LiSPSM / PSM, so their read-outs are that
+    // view's own (nullptr: `stats`).
+    const FrameStats* lispsmStats = nullptr;
+    const FrameStats* psmStats = nullptr;
 };
 struct ControlResult {
     bool changed = false;

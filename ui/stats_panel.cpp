@@ -10,6 +10,7 @@ void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, cons
     ImGui::SetNextWindowPos(ImVec2(10, 36), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.8f);
+    if (status.collapseStats) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Always);
     if (!ImGui::Begin("Stats")) {
         ImGui::End();
         return;

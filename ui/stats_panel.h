@@ -15,6 +15,7 @@ struct ViewerStatus {
     std::string lastError;                  // e.g. a dropped file that failed to load
     std::string lastMessage;                // e.g. "saved screenshot ..."
     std::vector<std::string> notices;       // e.g. "shadowMapSize 12345 -> 8192" (clamped values)
+    bool collapseStats = false;             // fold the stats window this frame (split compare began)
     std::vector<std::string> compareLines;  // one per split-compare view
 };
 

@@ -1,6 +1,8 @@
 // The real viewer under Xvfb driven by synthetic X events (tests/viewer/x11_send_input.cpp): key
 // taps far shorter than a frame all register, and a drag is measured from where the button went
 // down. The viewer runs until the synthetic close request and writes its settings (--save-view).
+#include "image.h"
+#include "png_text.h"
 #include "settings/settings.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +37,7 @@ Settings drive(const std::string& name, const std::string& view, const std::stri
                    log = dir / (name + ".log");
     std::ofstream(viewFile) << view;
     fs::remove(saved);
-    const std::string inner = quoted(SHADOWLAB_EXE) + " " + quoted(PLANE_BOX_SCENE) +
+    const std::string inner = "cd " + quoted(dir) + " && " + quoted(SHADOWLAB_EXE) + " " + quoted(PLANE_BOX_SCENE) +
                               " --width 960 --height 540 --view " + quoted(viewFile) + " --save-view " +
                               quoted(saved) + " " + viewerArgs + " & pid=$!; " + quoted(X11_SEND_INPUT) +
                               " plane-box.glb sleep:400 " + steps + " close; wait $pid";
@@ -82,6 +84,49 @@ TEST(ViewerInputUnderXvfb, ABadSceneOnTheCommandLineOpensTheDefaultSceneWithTheE
     EXPECT_EQ(std::system(cmd.c_str()), 0) << readFile(log);  // the window opened instead of exiting
     EXPECT_NE(readFile(log).find("not-a-scene.glb"), std::string::npos) << readFile(log);  // the error is told
     EXPECT_TRUE(fs::exists(shot)) << readFile(log);
+}
+
+TEST(ViewerInputUnderXvfb, F12SavesTheRenderedImageWithItsSettingsAndRenderReproducesIt) {
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().rfind("shadowlab-psm-", 0) == 0) fs::remove(entry.path());
+    drive("f12", R"({"method": "psm", "bias": {"backFaces": true}, "animation": {"playing": false, "time": 0.0}})",
+          "key:F12 sleep:1500");
+    fs::path shot;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().rfind("shadowlab-psm-", 0) == 0 && entry.path().extension() == ".png")
+            shot = entry.path();
+    ASSERT_FALSE(shot.empty()) << "F12 wrote no shadowlab-psm-*.png";
+    EXPECT_TRUE(fs::exists(fs::path(shot).replace_extension(".json")));
+    RgbaImage image;
+    std::string error;
+    ASSERT_TRUE(readPng(shot, image, error)) << error;
+    // The rendered 3D area only (960 wide, less the 370 px control window), not the panels.
+    EXPECT_EQ(image.width, 960 - 370);
+    EXPECT_EQ(image.height, 540);
+    const std::optional<std::string> json = readPngTextFromFile(shot, kSettingsPngKeyword, error);
+    ASSERT_TRUE(json) << error;
+    Settings embedded;
+    ASSERT_TRUE(fromJsonText(*json, embedded, error)) << error;
+    EXPECT_EQ(embedded.method, ShadowMethod::Psm);
+    EXPECT_TRUE(embedded.bias.backFaces);
+
+    // `render --view shot.png` at the same size reproduces the picture.
+    const fs::path again = dir / "f12-again.png", log = dir / "f12-render.log";
+    const std::string cmd = quoted(SHADOWLAB_EXE) + " render " + quoted(PLANE_BOX_SCENE) + " --view " + quoted(shot) +
+                            " --out " + quoted(again) + " --width 590 --height 540 > " + quoted(log) + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << readFile(log);
+    RgbaImage rendered;
+    ASSERT_TRUE(readPng(again, rendered, error)) << error;
+    ASSERT_EQ(rendered.width, image.width);
+    long differing = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::ivec4 a(image.at(x, y)), b(rendered.at(x, y));
+            differing += std::abs(a.r - b.r) > 6 || std::abs(a.g - b.g) > 6 || std::abs(a.b - b.b) > 6;
+        }
+    EXPECT_LT(differing, image.width * image.height / 100);
 }
 
 }  // namespace
