@@ -28,8 +28,7 @@ glm::dmat4 spotProjectionAlongY(double n, double f) {
 
 // e_world (thesis 9.2.3): the vertices of L n V n S nearest to the eye (max view-space z),
 // averaged over those within a small distance of the nearest.
-glm::dvec3 nearestVisiblePoint(const ConvexBody& lvs, const ViewFrustum& view, const ViewBasis& basis) {
-    const auto verts = lvs.vertices();
+glm::dvec3 nearestVisiblePoint(const std::vector<glm::dvec3>& verts, const ViewFrustum& view, const ViewBasis& basis) {
     double best = kInf, worst = -kInf;
     for (const auto& p : verts) {
         const double depth = glm::dot(p - view.eye, basis.forward);

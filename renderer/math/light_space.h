@@ -15,7 +15,7 @@ struct LightSpace {
 
 // e_world (thesis 9.2.3): the vertices of L n V n S nearest to the eye, averaged over those within
 // a small distance of the nearest.
-glm::dvec3 nearestVisiblePoint(const ConvexBody& lvs, const ViewFrustum& view, const ViewBasis& basis);
+glm::dvec3 nearestVisiblePoint(const std::vector<glm::dvec3>& lvsVertices, const ViewFrustum& view, const ViewBasis& basis);
 
 LightSpace makeLightSpace(const ShadowLight& light, const glm::dvec3& l, const glm::dvec3& up, const SpotFrustum& spot,
                           const glm::dvec3& eWorld, const glm::dvec3& viewDir, double rayLength,

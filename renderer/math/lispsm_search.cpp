@@ -9,7 +9,7 @@ namespace {
 // Warp candidates: u = ln(1 + k d) (d = B's light-space depth, so 1 + k d = f/n of P) on a grid,
 // then golden-section refinement around the best grid point over the samples that were within
 // kActiveShare of the largest footprint at some grid point (the others never decide the maximum).
-constexpr int kGridSteps = 10, kRefineSteps = 12;
+constexpr int kGridSteps = 5, kRefineSteps = 6;
 constexpr double kActiveShare = 0.7;
 constexpr double kHintTolerance = 1.10;
 constexpr double kMaxWarpRatio = 1e5;  // f/n beyond this spends the map on a sliver at the eye
@@ -49,7 +49,7 @@ std::vector<Sample> makeSamples(const WarpSearchInput& in) {
     const ViewFrustum& v = in.view;
     const glm::dmat4 viewProj = v.projectionMatrix() * v.viewMatrix();
     const std::vector<ReceiverSample> receivers =
-        receiverSamples(v, in.light, in.visibleLit, in.depthNear, in.depthFar);
+        receiverSamples(v, in.light, in.visibleLit, in.visibleLitVertices, in.depthNear, in.depthFar);
     const glm::dvec3 r0{in.ls.L[0][0], in.ls.L[1][0], in.ls.L[2][0]};
     const glm::dvec3 r2{in.ls.L[0][2], in.ls.L[1][2], in.ls.L[2][2]};
     const glm::dvec3 r3{in.ls.L[0][3], in.ls.L[1][3], in.ls.L[2][3]};
@@ -70,8 +70,28 @@ std::vector<Sample> makeSamples(const WarpSearchInput& in) {
 
 // The largest footprint over the samples for warp k, with the map fitted to B as fitToPoints does
 // (image x = (x - cx)/w, image y = z'/w, w = 1 + k z'; each axis scaled to the map).
+// Division-free per sample: with W = 1 + k z' every entry of A carries 1/W^2, so with
+// A~ = W^2 A (and C~ the columns of S adj(A~)) the squared footprint is |C~|^2 W^4 / det(A~)^2; the
+// maximum is tracked as a fraction (num / den), which halves the cost of the search.
+struct Fraction {
+    double num = 0.0, den = 1.0;
+    bool operator<(const Fraction& o) const { return num * o.den < o.num * den; }
+};
+
+Fraction footprintSquared(const Sample& s, double k, double cx, double su, double sv) {
+    const double W = 1.0 + k * s.zp, ex = (s.x - cx) * k;
+    const double a11 = (s.lx1 * W - ex * s.lz1) * su, a12 = (s.lx2 * W - ex * s.lz2) * su;
+    const double a21 = s.lz1 * sv, a22 = s.lz2 * sv;
+    const double det = a11 * a22 - a12 * a21;
+    if (!(std::abs(det) > 0.0)) return {};  // the light grazes this receiver, the same for every k
+    const double c1x = s.s11 * a22 - s.s12 * a21, c1y = s.s21 * a22 - s.s22 * a21;
+    const double c2x = s.s12 * a11 - s.s11 * a12, c2y = s.s22 * a11 - s.s21 * a12;
+    const double W2 = W * W;
+    return {std::max(c1x * c1x + c1y * c1y, c2x * c2x + c2y * c2y) * W2 * W2, det * det};
+}
+
 double worstFootprint(double k, const std::vector<Sample>& samples, const std::vector<BodyPoint>& body, double cx,
-                      double depth, std::vector<double>* perSample = nullptr) {
+                      double depth, std::vector<Fraction>* perSample = nullptr) {
     double xlo = kInf, xhi = -kInf;
     for (const BodyPoint& q : body) {
         const double xi = (q.x - cx) / (1.0 + k * q.zp);
@@ -79,43 +99,39 @@ double worstFootprint(double k, const std::vector<Sample>& samples, const std::v
         xhi = std::max(xhi, xi);
     }
     const double su = 1.0 / std::max(xhi - xlo, 1e-300), sv = (1.0 + k * depth) / std::max(depth, 1e-300);
-    double worst = 0.0;
+    Fraction worst;
     for (const Sample& s : samples) {
-        const double w = 1.0 / (1.0 + k * s.zp), w2 = w * w, ex = (s.x - cx) * k * w2;
-        const double a11 = (s.lx1 * w - ex * s.lz1) * su, a12 = (s.lx2 * w - ex * s.lz2) * su;
-        const double a21 = s.lz1 * w2 * sv, a22 = s.lz2 * w2 * sv;
-        const double det = a11 * a22 - a12 * a21;
-        double m2 = 0.0;
-        if (std::abs(det) > 0.0) {  // else the light grazes this receiver, the same for every k
-            const double c1x = s.s11 * a22 - s.s12 * a21, c1y = s.s21 * a22 - s.s22 * a21;
-            const double c2x = s.s12 * a11 - s.s11 * a12, c2y = s.s22 * a11 - s.s21 * a12;
-            m2 = std::max(c1x * c1x + c1y * c1y, c2x * c2x + c2y * c2y) / (det * det);
-        }
+        const Fraction m2 = footprintSquared(s, k, cx, su, sv);
         if (perSample) perSample->push_back(m2);
-        worst = std::max(worst, m2);
+        if (worst < m2) worst = m2;
     }
-    return std::sqrt(worst);
+    return std::sqrt(worst.num / worst.den);
 }
 
 }  // namespace
 
 std::vector<ReceiverSample> receiverSamples(const ViewFrustum& v, const ShadowLight& light,
-                                            const ConvexBody& visibleLit, double depthNear, double depthFar) {
+                                            const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
+                                            double depthNear, double depthFar) {
     std::vector<ReceiverSample> out;
     const ViewBasis b = viewBasis(v);
     // The visible lit body (L n V n S) between the nearest and farthest visible depth: its
     // vertices are the extreme receivers (nearest, farthest, at the image and cone borders), where
     // the footprint peaks; the midpoints towards its centroid add the interior.
-    ConvexBody slab = visibleLit;
-    slab.clip(glm::dvec4(-b.forward, glm::dot(b.forward, v.eye) + depthNear));
-    slab.clip(glm::dvec4(b.forward, -glm::dot(b.forward, v.eye) - depthFar));
-    std::vector<glm::dvec3> points = slab.vertices();
+    // (No clip, and no copy, where the range is the frustum's own.)
+    std::vector<glm::dvec3> points;
+    if (depthNear <= v.zNear && depthFar >= v.zFar) {
+        points = visibleLitVertices;
+    } else {
+        ConvexBody slab = visibleLit;
+        slab.clip(glm::dvec4(-b.forward, glm::dot(b.forward, v.eye) + depthNear));
+        slab.clip(glm::dvec4(b.forward, -glm::dot(b.forward, v.eye) - depthFar));
+        points = slab.vertices();
+    }
     if (points.empty()) return out;
     glm::dvec3 centroid{0.0};
     for (const auto& p : points) centroid += p;
     centroid /= double(points.size());
-    const std::size_t corners = points.size();
-    for (std::size_t i = 0; i < corners; ++i) points.push_back(0.5 * (points[i] + centroid));
     points.push_back(centroid);
     const glm::dvec3 towardLight = -glm::normalize(light.direction);
     out.reserve(2 * points.size());
@@ -173,13 +189,14 @@ WarpSearchResult searchWarp(const WarpSearchInput& in, double warpHint) {
     const double step = uMax / kGridSteps;
     // Grid pass over all samples; remember which ever come close to the maximum.
     std::vector<char> active(samples.size(), 0);
-    std::vector<double> values;
+    std::vector<Fraction> values;
     double bestU = 0.0, best = kInf;
     for (int i = 0; i <= kGridSteps; ++i) {
         values.clear();
         const double v = worstFootprint(std::expm1(i * step) / depth, samples, body, in.cx, depth, &values);
+        const double threshold = kActiveShare * kActiveShare * v * v;
         for (std::size_t s = 0; s < values.size(); ++s)
-            if (values[s] >= kActiveShare * kActiveShare * v * v) active[s] = 1;
+            if (values[s].num >= threshold * values[s].den) active[s] = 1;
         if (i == 0) r.uniformFootprint = v;
         if (v < best) {
             best = v;

@@ -18,6 +18,7 @@ struct WarpSearchInput {
     const LightSpace& ls;
     const std::vector<glm::dvec3>& bodyVertices;  // B: what the fitted map must contain
     const ConvexBody& visibleLit;                 // L n V n S (V n S for suns): where receivers can be
+    const std::vector<glm::dvec3>& visibleLitVertices;
     double zNearLs = 0.0;                         // B's nearest light-space z (P's near plane)
     double cx = 0.0;                              // the projection centre's light-space x
     double depthNear = 0.0, depthFar = 0.0;       // visible eye-depth range to sample
@@ -37,7 +38,8 @@ struct ReceiverSample {
     glm::dvec3 point{0.0}, normal{0.0, 1.0, 0.0};
 };
 std::vector<ReceiverSample> receiverSamples(const ViewFrustum& view, const ShadowLight& light,
-                                            const ConvexBody& visibleLit, double depthNear, double depthFar);
+                                            const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
+                                            double depthNear, double depthFar);
 // The largest texel footprint of a map over the samples (map and image of size 1: only ratios
 // between maps of the same view mean something).
 double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,

@@ -86,11 +86,17 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         lin.farDepth = r.hi + pad;
     }
 
+    // Where receivers can be: L n V n S (V n S for directional lights), its vertices listed once
+    // for e_world, the LiSPSM warp search and the PSM guard.
+    const ConvexBody& receiverBody = visibleLit.empty() ? B : visibleLit;
+    const bool needReceivers = spot || params.method == ShadowMethod::Lispsm || params.method == ShadowMethod::Psm;
+    const std::vector<glm::dvec3> receiverVertices =
+        needReceivers ? (visibleLit.empty() ? bv : visibleLit.vertices()) : std::vector<glm::dvec3>{};
     // e_world (thesis 9.2.3) from L n V n S (V n S for directional lights).
     // (Only LiSPSM and the spot frame's orientation ray need it.)
     const bool needE = spot || params.method == ShadowMethod::Lispsm;
     const glm::dvec3 eWorld =
-        needE ? nearestVisiblePoint(visibleLit.empty() ? B : visibleLit, view, basis) : view.eye;
+        needE ? nearestVisiblePoint(receiverVertices, view, basis) : view.eye;
 
     // The frame's up vector: view direction, or the body vector (thesis 9.2.6, directional only).
     glm::dvec3 up = basis.forward;
@@ -137,8 +143,8 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
             break;
         }
         case ShadowMethod::Lispsm: {
-            const LispsmInputs in{view, basis, light, sceneBounds, ls, bv, visibleLit.empty() ? B : visibleLit, eWorld,
-                                  rayLength};
+            const LispsmInputs in{view,     basis, light, sceneBounds, ls, bv, receiverBody, receiverVertices,
+                                  eWorld,   rayLength};
             M = lispsmMatrix(in, params.lispsm, params.collectPolygons, diag);
             break;
         }
@@ -161,7 +167,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
                 // largest texel footprint over the visible receivers with the focused uniform
                 // map's and keep the better map, saying so.
                 const std::vector<ReceiverSample> receivers =
-                    receiverSamples(view, light, visibleLit.empty() ? B : visibleLit, depthNear, depthFar);
+                    receiverSamples(view, light, receiverBody, receiverVertices, depthNear, depthFar);
                 const glm::dmat4 uniform = ssm(bv);
                 const double psmWorst = worstFootprintOf(M, view, receivers);
                 const double ssmWorst = worstFootprintOf(uniform, view, receivers);
