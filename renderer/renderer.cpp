@@ -127,6 +127,24 @@ void Renderer::cullCasters(Frame& frame, FrameStats& stats) const {
     stats.cullingCpuMs += msSince(start);
 }
 
+std::size_t Renderer::selectShadowMap(const ShadowMapKey& key, int views) {
+    // One map per view of a split compare, so each view's map survives the other views' frames;
+    // a single view keeps one (no second 2048^2 texture for a moving camera).
+    const std::size_t pool = std::size_t(std::clamp(views, 1, 3));
+    if (shadowMaps_.size() != pool) {
+        shadowMaps_.resize(pool);
+        mapLastUse_.resize(pool, 0);
+    }
+    std::size_t pick = 0;
+    bool holding = false;
+    for (std::size_t i = 0; i < pool && !holding; ++i)
+        if (shadowMaps_[i].holds(key)) pick = i, holding = true;
+    if (!holding)
+        pick = std::size_t(std::min_element(mapLastUse_.begin(), mapLastUse_.end()) - mapLastUse_.begin());
+    mapLastUse_[pick] = ++mapUseClock_;
+    return pick;
+}
+
 ShadowMapKey Renderer::shadowMapKey(const Frame& frame) const {
     const BiasSettings& bias = frame.settings.bias;
     const bool slope = bias.mode == DepthOffset::SlopeScale;
@@ -200,13 +218,14 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
 
     if (frame.shadowed) {
         ShadowMapKey key = shadowMapKey(frame);
-        stats.shadowMapReused = settings.skip.reuseShadowMap && shadowMap_.holds(key);
+        currentMap_ = selectShadowMap(key, settings.compare.count);
+        stats.shadowMapReused = settings.skip.reuseShadowMap && shadowMap().holds(key);
         if (stats.shadowMapReused) {
-            stats.shadowMapSize = shadowMap_.size();
+            stats.shadowMapSize = shadowMap().size();
             stats.passes.push_back({"shadow map (reused)", 0.0, 0.0});
         } else {
             shadowPass(frame, stats);
-            shadowMap_.setContent(std::move(key));
+            shadowMap().setContent(std::move(key));
         }
     }
     const bool blur = frame.shadowed && settings.filter.blurIterations > 0;
@@ -248,10 +267,10 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     const auto cpuStart = Clock::now();
     shadowTimer_.begin();
     const Settings& s = frame.settings;
-    shadowMap_.ensure(s.shadowMapSize);
-    stats.shadowMapSize = shadowMap_.size();
-    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap_.framebuffer());
-    glViewport(0, 0, shadowMap_.size(), shadowMap_.size());
+    shadowMap().ensure(s.shadowMapSize);
+    stats.shadowMapSize = shadowMap().size();
+    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap().framebuffer());
+    glViewport(0, 0, shadowMap().size(), shadowMap().size());
     // Inverted PSM lights store the far side as larger depth: clear to 0 and keep the greater.
     const GLfloat clearDepth = frame.reversedDepth ? 0.0f : 1.0f;
     glDepthMask(GL_TRUE);
@@ -326,9 +345,9 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
     program.set("uShadowFilter", int(s.filter.filter));
     program.set("uConstantOffset", s.bias.mode == DepthOffset::Constant ? float(s.bias.constant) : 0.0f);
-    program.set("uShadowTexel", glm::vec2(1.0f / float(shadowMap_.size())));
-    glBindTextureUnit(1, shadowMap_.texture());
-    glBindSampler(1, shadowMap_.sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware, frame.reversedDepth));
+    program.set("uShadowTexel", glm::vec2(1.0f / float(shadowMap().size())));
+    glBindTextureUnit(1, shadowMap().texture());
+    glBindSampler(1, shadowMap().sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware, frame.reversedDepth));
 }
 
 void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {

@@ -67,7 +67,7 @@ public:
     const FrameStats& lastFrameStats() const { return lastStats_; }
 
     // The last shadow map (depth texture), for insets; 0 before the first shadowed frame.
-    GLuint shadowMapTexture() const { return shadowMap_.texture(); }
+    GLuint shadowMapTexture() const { return shadowMaps_.empty() ? 0 : shadowMap().texture(); }
     const ShadowSetup& lastShadowSetup() const { return lastSetup_; }
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
 
@@ -109,7 +109,14 @@ private:
     const Scene* scene_ = nullptr;    // the scene uploaded last
     std::uint64_t sceneLoads_ = 0;    // bumped by setScene
     std::uint64_t sceneVersion_ = 0;  // bumped by setScene and updateInstances
-    ShadowMap shadowMap_;
+    // The map of the last shadowed frame, out of one per compared view (selectShadowMap).
+    ShadowMap& shadowMap() { return shadowMaps_[currentMap_]; }
+    const ShadowMap& shadowMap() const { return shadowMaps_[currentMap_]; }
+    std::size_t selectShadowMap(const ShadowMapKey& key, int views);
+    std::vector<ShadowMap> shadowMaps_{1};
+    std::vector<std::uint64_t> mapLastUse_{0};
+    std::uint64_t mapUseClock_ = 0;
+    std::size_t currentMap_ = 0;
     ShadowTermTargets termTargets_;
     VisibleDepthPrePass visibleDepth_;  // PSM auto near / LiSPSM auto z_f
     MsaaTarget msaa_;  // the forward pass's multisampled target (display.msaaSamples > 1)

@@ -131,6 +131,29 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     EXPECT_FALSE(firstFrame(scene, s).shadowMapReused);
 }
 
+TEST_F(FrameSkips, EachViewOfASplitCompareKeepsItsOwnMap) {
+    const Scene scene = planeBoxScene();
+    Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
+    s.compare.count = 3;
+    render(scene, s);  // creates renderer and target
+    const ShadowMethod methods[3] = {ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm};
+    auto view = [&](ShadowMethod m) {
+        Settings v = s;
+        v.method = m;
+        return v;
+    };
+    // Viewer frames: each view once per frame. The first frames evict each other's maps (PSM and
+    // LiSPSM start on estimated visible depths); from the third frame on every view reuses its own.
+    for (int frame = 0; frame < 2; ++frame)
+        for (ShadowMethod m : methods) firstFrame(scene, view(m));
+    for (ShadowMethod m : methods) EXPECT_TRUE(firstFrame(scene, view(m)).shadowMapReused) << methodName(m);
+    s.compare.count = 1;  // one view again: one map, re-rendered as the methods alternate
+    s.method = ShadowMethod::SsmFocused;
+    firstFrame(scene, s);
+    s.method = ShadowMethod::Lispsm;
+    EXPECT_FALSE(firstFrame(scene, s).shadowMapReused);
+}
+
 TEST_F(FrameSkips, VisibleDepthArrivesOneFrameLateAndIsKeptWhileTheViewStays) {
     const Scene scene = planeBoxScene();
     Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
