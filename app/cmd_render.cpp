@@ -30,6 +30,7 @@ struct RenderOptions {
     std::string camera;     // --camera NAME|INDEX
     bool truth = false;
     std::string mismatchOut;  // --mismatch-out: the truth comparison as a picture
+    bool temporal = false;    // --temporal: shadow-state flips along the scripted camera steps
     SettingsOverrides overrides;
     std::vector<std::string> limits;  // --limit KEY=N load budgets
 };
@@ -134,6 +135,13 @@ void runRender(const RenderOptions& options) {
                 if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
                 mismatches.blit(part, options.width * int(i), 0);
             }
+            if (options.temporal && rays) {
+                std::printf("  %s state flips with steady truth:", methodName(methods[i]));
+                for (const TemporalFigures& t :
+                     temporalStability(*renderer, *scene, view, options.width, options.height, *rays))
+                    std::printf("  %s %.3f%% (%zu points)", t.step.c_str(), 100.0 * t.flipShare, t.comparedPoints);
+                std::printf("\n");
+            }
         }
     }
     if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
@@ -167,6 +175,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_flag("--truth", options->truth,
                   "with --measure: compare the shadow state with exact visibility (Embree rays): E_total, false "
                   "shadow, false light, E_edge");
+    cmd->add_flag("--temporal", options->temporal,
+                  "with --measure --truth: temporal stability, the share of receiver points whose shadow state flips "
+                  "under a 1-pixel sideways step, a 0.1 degree turn and a 2 cm walk step while the truth does not");
     cmd->add_option("--mismatch-out", options->mismatchOut,
                     "with --measure --truth: write the mismatches as a PNG (light / dark grey: agree lit / in shadow; "
                     "red false shadow, blue false light, near-black: not a lit-facing receiver)");
