@@ -1,0 +1,226 @@
+// Cascaded shadow maps: split positions, per-split setups, stable SSM (see cascades.h).
+#include "math/cascades.h"
+
+#include "math/shadow_internal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace shadowlab {
+namespace {
+
+using detail::finite;
+using detail::fromRows;
+
+// Light-space axes that depend on the light direction only (never on the view): the stable map
+// must not turn when the camera turns.
+struct FixedLightAxes {
+    glm::dvec3 x, y, l;
+};
+FixedLightAxes fixedLightAxes(const glm::dvec3& direction) {
+    FixedLightAxes a;
+    a.l = glm::normalize(direction);
+    const glm::dvec3 helper = std::abs(a.l.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    a.x = glm::normalize(glm::cross(helper, a.l));
+    a.y = glm::cross(a.l, a.x);
+    return a;
+}
+
+// Depth row: dot(p, l) mapped from B's range to [-1, 1], padded so rounding at world offsets of
+// 1e5 keeps every vertex inside (the same concern as the focused fit's padding).
+glm::dvec4 depthRow(const glm::dvec3& l, const std::vector<glm::dvec3>& points) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, mag = 0.0;
+    for (const auto& p : points) {
+        const double t = glm::dot(p, l);
+        lo = std::min(lo, t);
+        hi = std::max(hi, t);
+        mag = std::max(mag, glm::length(p));
+    }
+    const double pad = 1e-6 * (hi - lo) + 1e-12 * mag + 1e-300;
+    lo -= pad;
+    hi += pad;
+    const double s = 2.0 / (hi - lo);
+    return {s * l, -(hi + lo) / (hi - lo)};
+}
+
+std::vector<glm::dvec3> polygonVertices(const PolygonList& faces) {
+    std::vector<glm::dvec3> out;
+    for (const auto& f : faces) out.insert(out.end(), f.begin(), f.end());
+    return out;
+}
+
+}  // namespace
+
+const char* splitParameterizationName(SplitParameterization p) {
+    switch (p) {
+    case SplitParameterization::Ssm: return "ssm";
+    case SplitParameterization::StableSsm: return "stable";
+    case SplitParameterization::Lispsm: return "lispsm";
+    }
+    return "ssm";
+}
+
+std::vector<double> practicalSplitDepths(double zNear, double zFar, int splits, double lambda) {
+    std::vector<double> z(splits + 1);
+    for (int i = 0; i <= splits; ++i) {
+        const double t = double(i) / splits;
+        const double zLog = zNear * std::pow(zFar / zNear, t);
+        const double zUni = zNear + (zFar - zNear) * t;
+        z[i] = lambda * zLog + (1.0 - lambda) * zUni;
+    }
+    z.front() = zNear;  // exact ends: pow() may be off by an ulp
+    z.back() = zFar;
+    return z;
+}
+
+std::string validateCascadeParams(const CascadeParams& p) {
+    std::ostringstream err;
+    if (p.splits < 1 || p.splits > kMaxCascadeSplits)
+        err << "csm.splits must be 1.." << kMaxCascadeSplits << " (got " << p.splits << ")";
+    else if (!(p.lambda >= 0.0 && p.lambda <= 1.0))
+        err << "csm.lambda must be in [0, 1] (got " << p.lambda << ")";
+    else if (p.mapResolution < 16)
+        err << "cascade map resolution must be at least 16 texels (got " << p.mapResolution << ")";
+    else if (!p.manualSplits.empty()) {
+        if (int(p.manualSplits.size()) != p.splits - 1)
+            err << "csm.manualSplits needs splits - 1 = " << p.splits - 1 << " values (got "
+                << p.manualSplits.size() << ")";
+        for (std::size_t i = 0; err.tellp() == 0 && i < p.manualSplits.size(); ++i) {
+            const double t = p.manualSplits[i];
+            const double prev = i == 0 ? 0.0 : p.manualSplits[i - 1];
+            if (!(t > prev && t < 1.0))
+                err << "csm.manualSplits must be strictly increasing fractions in (0, 1) (value " << i << " is " << t
+                    << ")";
+        }
+    }
+    return err.str();
+}
+
+std::vector<double> cascadeSplitDepths(const CascadeParams& p, double zNear, double zFar) {
+    if (!validateCascadeParams(p).empty() || !(zNear > 0.0 && zFar > zNear)) return {};
+    if (p.manualSplits.empty()) return practicalSplitDepths(zNear, zFar, p.splits, p.lambda);
+    std::vector<double> z{zNear};
+    for (double t : p.manualSplits) z.push_back(zNear + t * (zFar - zNear));
+    z.push_back(zFar);
+    return z;
+}
+
+ViewFrustum splitFrustum(const ViewFrustum& view, double zNear, double zFar) {
+    ViewFrustum v = view;
+    v.zNear = zNear;
+    v.zFar = zFar;
+    return v;
+}
+
+FrustumSphere frustumSliceSphere(double fovY, double aspect, double zNear, double zFar) {
+    // Corners at eye distance z lie k z off the axis, k = tan(fovY / 2) sqrt(1 + aspect^2). The
+    // centre c on the axis equidistant from near and far corners:
+    //   (c - n)^2 + (k n)^2 = (f - c)^2 + (k f)^2  =>  c = (f + n)(1 + k^2) / 2,
+    // clamped to f (wide frusta: the far rectangle's circumcircle already holds the near one).
+    const double k = std::tan(0.5 * fovY) * std::sqrt(1.0 + aspect * aspect);
+    FrustumSphere s;
+    s.centerDistance = 0.5 * (zFar + zNear) * (1.0 + k * k);
+    if (s.centerDistance >= zFar) {
+        s.centerDistance = zFar;
+        s.radius = k * zFar;
+    } else {
+        const double dn = s.centerDistance - zNear;
+        s.radius = std::sqrt(dn * dn + k * k * zNear * zNear);
+    }
+    return s;
+}
+
+ShadowSetup computeStableSsmSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
+                                  const ShadowParams& params, int mapResolution) {
+    ShadowParams focused = params;
+    focused.method = ShadowMethod::SsmFocused;
+    focused.collectPolygons = true;  // B's vertices fit the depth range below
+    ShadowSetup setup = computeShadowSetup(view, light, sceneBounds, focused);
+    if (!setup.valid) return setup;
+    if (light.kind != ShadowLightKind::Directional) {
+        setup.diagnostics.fallback = "stable SSM needs a directional light: focused SSM used";
+    } else if (mapResolution < 16 || !finite(view.forward) || glm::length(view.forward) == 0.0) {
+        setup.diagnostics.fallback = "stable SSM needs a map of at least 16 texels: focused SSM used";
+    } else {
+        const FixedLightAxes axes = fixedLightAxes(light.direction);
+        const FrustumSphere sphere = frustumSliceSphere(view.fovY, view.aspect, view.zNear, view.zFar);
+        const glm::dvec3 center = view.eye + glm::normalize(view.forward) * sphere.centerDistance;
+        // Half width h with one spare texel on each side: the snap moves the centre by at most
+        // half a texel, texel = 2h / res, h - r = texel  =>  h = r res / (res - 2).
+        const double res = double(mapResolution);
+        const double halfWidth = sphere.radius * res / (res - 2.0);
+        const double texel = 2.0 * halfWidth / res;
+        const double cx = std::round(glm::dot(center, axes.x) / texel) * texel;
+        const double cy = std::round(glm::dot(center, axes.y) / texel) * texel;
+        const glm::dvec4 rowX{axes.x / halfWidth, -cx / halfWidth};
+        const glm::dvec4 rowY{axes.y / halfWidth, -cy / halfWidth};
+        setup.worldToShadowClip =
+            fromRows(rowX, rowY, depthRow(axes.l, polygonVertices(setup.diagnostics.bodyB)), {0, 0, 0, 1});
+        setup.reverseDepthTest = false;
+        setup.diagnostics.hasProjectionCenter = false;
+        setup.diagnostics.warp = 0.0;
+        setup.diagnostics.lispsmP.clear();
+    }
+    if (!params.collectPolygons) {
+        setup.diagnostics.bodyB.clear();
+        setup.diagnostics.viewV.clear();
+        setup.diagnostics.sceneS.clear();
+        setup.diagnostics.lightL.clear();
+    }
+    return setup;
+}
+
+double texelWorldSizeAt(const glm::dmat4& m, const glm::dvec3& p, int resolution) {
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    if (!(std::abs(h.w) > 0.0) || resolution <= 0) return 0.0;
+    // d(x/w)/dp = (row0 w - row3 x) / w^2 (xyz parts); image texels u = (x/w + 1) res / 2.
+    double size = 0.0;
+    for (int r = 0; r < 2; ++r) {
+        const glm::dvec3 rowR{m[0][r], m[1][r], m[2][r]}, rowW{m[0][3], m[1][3], m[2][3]};
+        const glm::dvec3 grad = (rowR * h.w - rowW * h[r]) / (h.w * h.w) * (0.5 * resolution);
+        const double g = glm::length(grad);
+        if (g > 0.0) size = std::max(size, 1.0 / g);
+    }
+    return size;
+}
+
+CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
+                                 const CascadeParams& params) {
+    CascadeSetup out;
+    out.error = validateCascadeParams(params);
+    if (out.error.empty() && !(view.zNear > 0.0 && view.zFar > view.zNear))
+        out.error = "cascades need 0 < zNear < zFar";
+    if (!out.error.empty()) return out;
+    const std::vector<double> z = cascadeSplitDepths(params, view.zNear, view.zFar);
+    const glm::dvec3 forward = glm::length(view.forward) > 0.0 ? glm::normalize(view.forward) : view.forward;
+    for (int i = 0; i < params.splits; ++i) {
+        CascadeSplit split;
+        split.zNear = z[i];
+        split.zFar = z[i + 1];
+        const ViewFrustum sub = splitFrustum(view, split.zNear, split.zFar);
+        ShadowParams p = params.base;
+        switch (params.perSplit) {
+        case SplitParameterization::Ssm:
+            p.method = ShadowMethod::SsmFocused;
+            split.setup = computeShadowSetup(sub, light, sceneBounds, p);
+            break;
+        case SplitParameterization::StableSsm:
+            split.setup = computeStableSsmSetup(sub, light, sceneBounds, p, params.mapResolution);
+            break;
+        case SplitParameterization::Lispsm:
+            p.method = ShadowMethod::Lispsm;
+            split.setup = computeShadowSetup(sub, light, sceneBounds, p);
+            break;
+        }
+        if (split.setup.valid) {
+            const glm::dvec3 mid = view.eye + forward * (0.5 * (split.zNear + split.zFar));
+            split.texelWorldSize = texelWorldSizeAt(split.setup.worldToShadowClip, mid, params.mapResolution);
+        }
+        out.splits.push_back(std::move(split));
+    }
+    return out;
+}
+
+}  // namespace shadowlab
