@@ -6,6 +6,7 @@
 #include "accuracy.h"
 #include "renderer.h"
 #include "scenes/animation.h"
+#include "render_compare.h"
 #include "view_setup.h"
 
 #include <CLI/CLI.hpp>
@@ -33,6 +34,8 @@ struct RenderOptions {
     bool temporal = false;    // --temporal: shadow-state flips along the scripted camera steps
     SettingsOverrides overrides;
     std::vector<std::string> limits;  // --limit KEY=N load budgets
+    std::vector<std::string> compare;  // --compare A.json B.json
+    double diffScale = 4.0;
 };
 
 [[noreturn]] void fail(const std::string& message, int code = 1) {
@@ -107,6 +110,13 @@ void runRender(const RenderOptions& options) {
                   << " s\n";
     }
 
+    if (!options.compare.empty()) {  // A/B compare of two view states (app/render_compare.h)
+        const CompareRequest request{options.compare[0], options.compare[1], options.width, options.height,
+                                     options.diffScale, options.out};
+        if (!renderCompare(*renderer, *scene, settings, request, error)) fail(error);
+        if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
+        return;
+    }
     const bool all = options.overrides.method == "all";
     const std::vector<ShadowMethod> methods =
         all ? std::vector<ShadowMethod>{ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm}
@@ -165,6 +175,11 @@ void addRenderCommand(CLI::App& app) {
                     "the scene's glTF camera to render from, by name or 0-based index (before --view and --set)");
     cmd->add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm, lispsm, or all (side by side)");
     cmd->add_option("--set", options->overrides.sets, "a setting as key=value, e.g. bias.mode=slope (repeatable)");
+    cmd->add_option("--compare", options->compare,
+                    "A/B compare: render with view state A and with B (JSON or a shadowlab screenshot), each on top "
+                    "of --view/--set, and write A | B | difference")
+        ->expected(2);
+    cmd->add_option("--diff-scale", options->diffScale, "with --compare: difference image gain")->capture_default_str();
     cmd->add_option("--stats", options->statsFile,
                     "write the frame's figures as JSON: draw calls and triangles per pass, instances culled "
                     "(view / caster), CPU ms per stage, GPU ms per pass, whether the shadow map was reused");

@@ -24,6 +24,7 @@
 #include "view_setup.h"
 #include "view_state.h"
 #include "viewer_accuracy.h"
+#include "viewer_ab.h"
 #include "viewer_frame.h"
 #include "viewer_window.h"
 
@@ -54,6 +55,8 @@ struct ViewerOptions {
     bool noUi = false;       // start with the panels hidden (F1 toggles)
     int width = 1280, height = 720;
     SettingsOverrides overrides;
+    std::string abView;                // --ab A.json: start in A/B compare with A from this view state
+    std::string abMode = "side";       // --ab-mode side|wipe|diff
 };
 
 // Frames drawn after the last event or setting change before the window goes idle: ImGui settles
@@ -108,6 +111,8 @@ struct ViewerState {
     DragTracker drag;
     double scroll = 0.0;
     std::unique_ptr<SceneLoadJob> load;
+    ui::AbCompare ab;  // A/B compare of two settings (ui/ab_panel.h)
+    std::string abView;  // --ab, applied when the first scene arrives
     ViewerAccuracy accuracy;  // the accuracy panel (app/viewer_accuracy.h)
     bool initialLoad = true;  // the scene of the command line (its settings take the overrides)
     bool uploadNext = false;  // a finished load is uploaded next frame, after its "uploading" frame
@@ -177,6 +182,15 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
         state.settings = initialSettings(scene);
         std::string error;
         if (!applyOverrides(state.settings, overrides, error)) state.status.lastError = error;
+        if (!state.abView.empty()) {  // --ab: A is the command line's settings with that view state on top
+            Settings a = state.settings;
+            if (readViewFile(state.abView, a, error)) {
+                state.ab.a = a;
+                state.ab.active = true;
+            } else {
+                state.status.lastError = error;
+            }
+        }
     } else {
         state.settings.camera = initialSettings(scene).camera;
         state.settings.animation.time = 0.0;
@@ -281,9 +295,10 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     ui::ControlContext ctx{&state.stats,    state.scene ? &*state.scene : &kNoScene, state.animation,
                            state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file,
                            &state.accuracy.view, &state.accuracy.toggles};
+    ctx.ab = &state.ab;
     // Split compare: the read-outs of the view that shows the method, not of the left view.
     const std::vector<ShadowMethod> shown = ui::shownMethods(state.settings);
-    for (std::size_t i = 0; i < shown.size() && i < state.paneStats.size(); ++i) {
+    for (std::size_t i = 0; i < shown.size() && i < state.paneStats.size() && !state.ab.active; ++i) {
         if (shown[i] == ShadowMethod::Lispsm && !ctx.lispsmStats) ctx.lispsmStats = &state.paneStats[i];
         if (shown[i] == ShadowMethod::Psm && !ctx.psmStats) ctx.psmStats = &state.paneStats[i];
     }
@@ -386,10 +401,18 @@ void runViewer(const ViewerOptions& options) {
         throw CLI::RuntimeError(1);
     }
     SectionTimer sectionTimer(kFrameSections);
+    AbTargets abTargets;
     ImGuiSession imgui(window.get());
 
     ViewerState state;
     state.showUi = !options.noUi;
+    state.abView = options.abView;
+    if (options.abMode == "wipe") state.ab.mode = ui::AbMode::Wipe;
+    else if (options.abMode == "diff") state.ab.mode = ui::AbMode::Difference;
+    else if (options.abMode != "side") {
+        std::cerr << "shadowlab: --ab-mode is side, wipe or diff\n";
+        throw CLI::RuntimeError(1);
+    }
     state.status.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     startSceneLoad(state, sceneFile);
 
@@ -426,14 +449,17 @@ void runViewer(const ViewerOptions& options) {
 
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
-        handleInput(state, std::move(input), window.get(), layoutFrame(fbWidth, fbHeight, state.showUi, state.settings));
+        handleInput(state, std::move(input), window.get(),
+                    layoutFrame(fbWidth, fbHeight, state.showUi, state.settings,
+                                int(framePanes(state.ab, state.settings).size())));
         const Settings before = state.settings;
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         if (state.showUi) drawPanels(state, fbWidth, fbHeight);
-        const Layout layout = layoutFrame(fbWidth, fbHeight, state.showUi, state.settings);
+        const std::vector<Pane> panes = framePanes(state.ab, state.settings);
+        const Layout layout = layoutFrame(fbWidth, fbHeight, state.showUi, state.settings, int(panes.size()));
         if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state, dt));
         updateTitle(window.get(), state, windowTitle);
 
@@ -444,8 +470,16 @@ void runViewer(const ViewerOptions& options) {
         glViewport(0, 0, std::max(1, fbWidth), std::max(1, fbHeight));
         if (state.scene && fbWidth > 0 && fbHeight > 0) {
             advanceClock(state, *renderer, dt);
-            views = drawViews({*renderer, *overlays, sectionTimer}, *state.scene, state.settings, layout,
-                              state.observer, toFramebuffer(window.get(), state.drag.cursor()));
+            if (abComposites(state.ab)) {
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                const GLfloat clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+                glClearBufferfv(GL_COLOR, 0, clear);
+                views.stats = drawAbComposite(*renderer, *state.scene, state.settings, layout, state.ab, abTargets,
+                                              views.captions);
+            } else {
+                views = drawViews({*renderer, *overlays, sectionTimer}, *state.scene, panes, layout, state.observer,
+                                  toFramebuffer(window.get(), state.drag.cursor()));
+            }
             state.stats = views.stats;
             state.paneStats = views.paneStats;
             if (std::exchange(state.accuracy.requested, false))
@@ -520,6 +554,10 @@ void addViewerOptions(CLI::App& app) {
     app.add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
     app.add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm or lispsm");
     app.add_option("--set", options->overrides.sets, "a setting as key=value (repeatable)");
+    app.add_option("--ab", options->abView,
+                   "start in A/B compare: A = these view-state settings (JSON or screenshot), B = the current ones");
+    app.add_option("--ab-mode", options->abMode, "A/B compare shown as side (A | B), wipe or diff")
+        ->capture_default_str();
     // Runs when no sub-command was given.
     app.callback([&app, options] {
         if (app.get_subcommands().empty()) runViewer(*options);

@@ -14,12 +14,23 @@ bool contains(const InsetRect& r, double x, double y) {
     return !r.empty() && x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height;
 }
 
-Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings) {
+std::vector<Pane> splitPanes(const Settings& settings) {
+    std::vector<Pane> panes;
+    const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
+    for (ShadowMethod m : methods) {
+        Pane p{settings, methods.size() > 1 ? methodName(m) : ""};
+        p.settings.method = m;
+        panes.push_back(std::move(p));
+    }
+    return panes;
+}
+
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount) {
     Layout l;
     l.fbWidth = fbWidth;
     l.fbHeight = fbHeight;
     l.viewWidth = showUi ? std::max(16, fbWidth - int(ui::controlWindowWidth())) : fbWidth;
-    const int count = int(ui::shownMethods(settings).size());
+    const int count = paneCount > 0 ? paneCount : int(ui::shownMethods(settings).size());
     for (int i = 0; i < count; ++i) {
         const int x0 = l.viewWidth * i / count, x1 = l.viewWidth * (i + 1) / count;
         l.views.push_back({x0, 0, std::max(1, x1 - x0 - (i + 1 < count ? 2 : 0)), fbHeight});
@@ -125,9 +136,10 @@ void addErrorCaptions(const ViewsResult& views, const Layout& layout, const glm:
     }
 }
 
-ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
+ViewsResult drawViews(FrameTools tools, const Scene& scene, const std::vector<Pane>& panes, const Layout& layout,
                       const ui::ObserverView& observer, const glm::dvec2& cursor) {
     ViewsResult result;
+    const Settings& settings = panes.back().settings;  // the current settings (B in an A/B compare)
     const int fbHeight = layout.fbHeight;
     const double seconds = settings.animation.time;
     // The area right of the views (under the control window) is cleared once.
@@ -136,31 +148,31 @@ ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& sett
     const GLfloat clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
     glClearBufferfv(GL_COLOR, 0, clear);
     // Right to left, so the left view (whose shadow map and setup the insets show) is rendered last.
-    const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
-    result.paneStats.resize(methods.size());
-    if (settings.viewMode == ViewMode::AliasingError) result.errors.resize(methods.size());
-    for (int i = int(methods.size()) - 1; i >= 0; --i) {
-        Settings view = settings;
-        view.method = methods[std::size_t(i)];
+    const int count = int(std::min(panes.size(), layout.views.size()));
+    result.paneStats.resize(std::size_t(count));
+    const bool measured = settings.viewMode == ViewMode::AliasingError;
+    if (measured) result.errors.resize(std::size_t(count));
+    for (int i = count - 1; i >= 0; --i) {
+        const Settings& view = panes[std::size_t(i)].settings;
         const InsetRect r = toGl(layout.views[std::size_t(i)], fbHeight);
         tools.timer.begin(i);
         FrameStats viewStats;
-        if (settings.viewMode == ViewMode::AliasingError) {
+        if (measured) {
             // The heat map and, from the same frame, the float footprint per pixel for the numbers.
-            MeasureFrame measured;
+            MeasureFrame frame;
             viewStats = tools.renderer.renderMeasured(scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height},
-                                                      measured);
-            result.errors[std::size_t(i)] = paneError(measured, layout.views[std::size_t(i)], cursor);
+                                                      frame);
+            result.errors[std::size_t(i)] = paneError(frame, layout.views[std::size_t(i)], cursor);
         } else {
             viewStats = tools.renderer.render(scene, view, seconds, Viewport{0, r.x, r.y, r.width, r.height});
         }
         tools.timer.end(i);
-        if (methods.size() > 1) {
-            result.captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, methodName(view.method)});
+        const std::string& caption = panes[std::size_t(i)].caption;
+        if (!caption.empty()) {
+            result.captions.push_back({float(layout.views[std::size_t(i)].x + 8), 8.0f, caption});
             result.compareLines.insert(result.compareLines.begin(),
-                                       std::string(methodName(view.method)) + ": GPU " +
-                                           ui::formatNumber(tools.timer.lastMs(i), 3) + " ms, casters " +
-                                           std::to_string(viewStats.castersDrawn) + " (culled " +
+                                       caption + ": GPU " + ui::formatNumber(tools.timer.lastMs(i), 3) +
+                                           " ms, casters " + std::to_string(viewStats.castersDrawn) + " (culled " +
                                            std::to_string(viewStats.castersCulled) + ")");
         }
         result.paneStats[std::size_t(i)] = viewStats;

@@ -23,7 +23,16 @@ struct Layout {
 
 InsetRect toGl(const InsetRect& r, int fbHeight);
 bool contains(const InsetRect& r, double x, double y);
-Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings);
+// `paneCount`: views side by side (0: as many as the split-compare methods).
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount = 0);
+
+// One view of the frame: the settings it is rendered with and its caption ("" for none).
+struct Pane {
+    Settings settings;
+    std::string caption;
+};
+// The split-compare views of `settings` (one pane when split compare is off).
+std::vector<Pane> splitPanes(const Settings& settings);
 
 // The aliasing error of one split view, live while the aliasing view is on (item "numbers on
 // screen"): the texel-footprint statistics of its measured receivers and the value under the cursor.
@@ -54,7 +63,7 @@ struct FrameTools {
 
 // Clears the window and draws every split view and the switched-on insets. `cursor`: framebuffer
 // pixels, top-left origin (for the error read-out under it).
-ViewsResult drawViews(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
+ViewsResult drawViews(FrameTools tools, const Scene& scene, const std::vector<Pane>& panes, const Layout& layout,
                       const ui::ObserverView& observer, const glm::dvec2& cursor);
 
 // Captions with each pane's error statistics and the value under the cursor.

@@ -1,5 +1,6 @@
 // The control window: every panel as a collapsing section at the right edge, the view-state
 // panel and the captions over the 3D image. ImGui only.
+#include "ab_panel.h"
 #include "accuracy_panel.h"
 #include "display_panel.h"
 #include "file_panel.h"
@@ -86,6 +87,7 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
     if (ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen))
         result.changed |= drawOverlayPanel(s, ctx.observer ? *ctx.observer : localObserver);
     if (ImGui::CollapsingHeader("Split compare")) result.changed |= drawComparePanel(s);
+    if (ctx.ab && ImGui::CollapsingHeader("A/B compare")) result.changed |= drawAbPanel(*ctx.ab, s);
     if (ImGui::CollapsingHeader("Skips")) result.changed |= drawSkipPanel(s);
     if (ctx.accuracy && ctx.accuracyToggles && ImGui::CollapsingHeader("Accuracy"))
         result.accuracy = drawAccuracyPanel(*ctx.accuracy, *ctx.accuracyToggles);

@@ -65,6 +65,7 @@ struct ViewStateUi {
 ViewStateRequests drawViewStatePanel(ViewStateUi& ui);
 
 struct FileUi;
+struct AbCompare;
 struct AccuracyView;
 struct AccuracyToggles;
 struct AccuracyRequest {
@@ -86,6 +87,7 @@ struct ControlContext {
     // view's own (nullptr: `stats`).
     const FrameStats* lispsmStats = nullptr;
     const FrameStats* psmStats = nullptr;
+    AbCompare* ab = nullptr;  // A/B compare of two settings (ui/ab_panel.h)
 };
 struct ControlResult {
     bool changed = false;

@@ -129,5 +129,35 @@ TEST(ViewerInputUnderXvfb, F12SavesTheRenderedImageWithItsSettingsAndRenderRepro
     EXPECT_LT(differing, image.width * image.height / 100);
 }
 
+TEST(ViewerInputUnderXvfb, AbDifferenceOfIdenticalSettingsIsBlackAndRenderCompareSaysZero) {
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    const fs::path view = dir / "ab-same.json", shot = dir / "ab-diff.png", log = dir / "ab.log";
+    std::ofstream(view) << R"({"method": "psm", "animation": {"playing": false, "time": 0.0}})";
+    fs::remove(shot);
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+                            " " + quoted(PLANE_BOX_SCENE) + " --view " + quoted(view) + " --ab " + quoted(view) +
+                            " --ab-mode diff --frames 2 --width 400 --height 240 --no-ui --screenshot " +
+                            quoted(shot) + " > " + quoted(log) + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << readFile(log);
+    RgbaImage image;
+    std::string error;
+    ASSERT_TRUE(readPng(shot, image, error)) << error;
+    long lit = 0;
+    for (int y = 30; y < image.height; ++y)  // below the caption line
+        for (int x = 0; x < image.width; ++x) lit += image.at(x, y).r + image.at(x, y).g + image.at(x, y).b > 0;
+    EXPECT_EQ(lit, 0);
+
+    const fs::path out = dir / "ab-render.png", renderLog = dir / "ab-render.log";
+    const std::string render = quoted(SHADOWLAB_EXE) + " render " + quoted(PLANE_BOX_SCENE) + " --compare " +
+                               quoted(view) + " " + quoted(view) + " --out " + quoted(out) +
+                               " --width 200 --height 120 > " + quoted(renderLog) + " 2>&1";
+    ASSERT_EQ(std::system(render.c_str()), 0) << readFile(renderLog);
+    EXPECT_NE(readFile(renderLog).find("difference: max 0/255"), std::string::npos) << readFile(renderLog);
+    RgbaImage written;
+    ASSERT_TRUE(readPng(out, written, error)) << error;
+    EXPECT_EQ(written.width, 3 * 200);  // A | B | difference
+}
+
 }  // namespace
 }  // namespace shadowlab
