@@ -1,6 +1,8 @@
 // shadowlab render SCENE --out FILE.png: one headless frame through EGL, written as PNG.
 #include "commands.h"
 #include "gl/debug_output.h"
+#include "gl/gl.h"
+#include "image.h"
 #include "headless_context.h"
 #include "render_target.h"
 #include "accuracy.h"
@@ -11,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -81,7 +84,30 @@ void writeStats(Renderer& renderer, const std::string& file) {
     if (!out) fail("cannot write " + file);
 }
 
+// Sizes are checked before anything is loaded or allocated: against the PNG writer's limit for the
+// whole (side by side) image here, against the GL implementation's once a context exists.
+void checkImageSize(const RenderOptions& options) {
+    if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
+        fail("--width/--height must be between 16 and 16384", 2);
+    const int views = options.overrides.method == "all" ? 3 : 1;
+    std::string error;
+    if (!pngWritable(options.width * views, options.height, error))
+        fail("--width " + std::to_string(options.width) + (views > 1 ? " x 3 methods" : "") + " by --height " +
+                 std::to_string(options.height) + ": " + error, 2);
+}
+
+void checkGlSize(const RenderOptions& options) {
+    GLint maxTexture = 0, maxRenderbuffer = 0, maxViewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+    const int limit = std::min({maxTexture, maxRenderbuffer, maxViewport[0], maxViewport[1]});
+    if (options.width > limit || options.height > limit)
+        fail("--width/--height beyond this OpenGL implementation's limit of " + std::to_string(limit) + " pixels", 2);
+}
+
 void runRender(const RenderOptions& options) {
+    checkImageSize(options);
     std::string error;
     LoadOptions load;
     if (!applyLoadLimits(load, options.limits, error)) fail(error, 2);
@@ -90,11 +116,12 @@ void runRender(const RenderOptions& options) {
     Settings settings = initialSettings(*scene);
     if (!options.camera.empty() && !applySceneCamera(*scene, options.camera, settings, error)) fail(error);
     if (!applyOverrides(settings, options.overrides, error)) fail(error);
-    if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
-        fail("--width/--height must be between 16 and 16384");
+    for (const std::string& notice : sceneNotices(settings, scene->lights.size()))
+        std::cerr << "shadowlab render: note: " << notice << "\n";
 
     auto context = HeadlessContext::create(error);
     if (!context) fail(error);
+    checkGlSize(options);
     gl::DebugLog debugLog;
     gl::installDebugOutput(debugLog);
     auto renderer = Renderer::create(error);

@@ -20,6 +20,8 @@ void addStressCommand(CLI::App& app);    // shadowlab stress --cases N --seed S
 void addGenerateCommand(CLI::App& app);  // shadowlab generate NAME --out FILE.glb
 void addBenchCommand(CLI::App& app);     // shadowlab bench SPEC.json|--quick --out DIR
 
+void addSettingsCommand(CLI::App& app);  // shadowlab settings: every setting and load limit
+
 // `--limit KEY=N` (repeatable) on a command that loads a scene, and applying what it collected.
 void addLoadLimitOption(CLI::App& cmd, std::vector<std::string>& limits);
 bool applyLoadLimits(LoadOptions& options, const std::vector<std::string>& limits, std::string& error);

@@ -4,6 +4,7 @@
 #include "png_text.h"
 #include "scenes/gltf_loader.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -66,6 +67,13 @@ bool readTextFile(const std::string& file, std::string& text, std::string& error
 }
 
 bool readViewFile(const std::string& file, Settings& settings, std::string& error) {
+    // A FIFO would block the probe below and a device never end; a huge text is refused unread.
+    std::error_code ec;
+    const auto status = std::filesystem::status(file, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+        error = file + ": not a regular file (a view is a .json file or a .png with settings)";
+        return false;
+    }
     std::string text;
     char head[8] = {};
     std::ifstream probe(file, std::ios::binary);
@@ -76,6 +84,10 @@ bool readViewFile(const std::string& file, Settings& settings, std::string& erro
         text = std::move(*embedded);
     } else if (probe.gcount() >= 4 && std::string(head, 4) == "glTF") {
         error = file + ": a glTF scene, not a view state (open it as a scene)";
+        return false;
+    } else if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxSettingsJsonBytes) {
+        error = file + ": " + std::to_string(size) + " bytes; a view file is at most " +
+                std::to_string(kMaxSettingsJsonBytes) + " bytes";
         return false;
     } else if (!readTextFile(file, text, error)) {
         return false;

@@ -38,9 +38,29 @@ void drawLabel(RgbaImage& image, int x, int y, const std::string& text, int scal
     }
 }
 
+bool pngWritable(int width, int height, std::string& error) {
+    constexpr std::uint64_t kMaxFilteredBytes = 3ull << 29;  // 1.5 GiB
+    if (width <= 0 || height <= 0) {
+        error = "an empty image cannot be written";
+        return false;
+    }
+    const std::uint64_t filtered = (4 * std::uint64_t(width) + 1) * std::uint64_t(height);
+    if (filtered > kMaxFilteredBytes) {
+        error = std::to_string(width) + " x " + std::to_string(height) + " pixels is beyond the PNG writer's limit of " +
+                std::to_string(kMaxFilteredBytes) + " bytes of rows (at this height at most " +
+                std::to_string((kMaxFilteredBytes / std::uint64_t(height) - 1) / 4) + " pixels wide)";
+        return false;
+    }
+    return true;
+}
+
 bool writePng(const RgbaImage& image, const std::filesystem::path& file, std::string& error) {
     if (image.width <= 0 || image.height <= 0 || image.pixels.size() < std::size_t(image.width) * image.height * 4) {
         error = "cannot write '" + file.string() + "': empty image";
+        return false;
+    }
+    if (!pngWritable(image.width, image.height, error)) {
+        error = "cannot write '" + file.string() + "': " + error;
         return false;
     }
     if (!stbi_write_png(file.string().c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4)) {

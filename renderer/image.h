@@ -26,6 +26,10 @@ struct RgbaImage {
 // box, so labels stay readable on any render (stb_easy_font glyphs).
 void drawLabel(RgbaImage& image, int x, int y, const std::string& text, int scale);
 
+// Whether stb's PNG writer can take a width x height RGBA image: it holds the filtered rows,
+// (4 * width + 1) * height bytes, and its deflate output in int-sized buffers, so we stay at
+// 1.5 GiB of filtered rows (a 16384^2 image is 1 GiB; 3 x 16384 by 16384 overflowed an int).
+bool pngWritable(int width, int height, std::string& error);
 bool writePng(const RgbaImage& image, const std::filesystem::path& file, std::string& error);
 bool readPng(const std::filesystem::path& file, RgbaImage& image, std::string& error);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace glm {
@@ -64,72 +65,119 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, vie
 
 namespace {
 
-const char* typeName(const json& j) { return j.type_name(); }
+// Values come from users and files: a 50 MB string must not be echoed whole.
+std::string cut(std::string_view text) {
+    return text.size() > 80 ? std::string(text.substr(0, 77)) + "..." : std::string(text);
+}
 
-bool sameKind(const json& a, const json& b) {
-    return (a.is_number() && b.is_number()) || a.type() == b.type();
+std::string lineAndColumn(std::string_view text, std::size_t byte) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// What a setting takes, in words, for messages: "a whole number in 256 .. 8192".
+std::string expected(const std::string& key, const json& slot) {
+    double lo = 0, hi = 0;
+    const bool ranged = settingRange(key, lo, hi);
+    auto range = [&] {
+        std::ostringstream s;
+        s << " in " << lo << " .. " << hi;
+        return ranged ? s.str() : std::string();
+    };
+    if (slot.is_boolean()) return "true or false";
+    if (slot.is_number_integer()) return "a whole number" + range();
+    if (slot.is_number()) return "a number" + range();
+    if (slot.is_string()) return "one of " + settingChoices(key);
+    if (key == "compare.methods") return "a list of up to 3 of " + settingChoices(key);
+    return "3 finite numbers [x, y, z]";
+}
+
+std::string shown(const json& value) { return cut(value.is_string() ? "'" + value.get<std::string>() + "'" : value.dump()); }
+
+// Checks one value against the slot it replaces (range-checking doubles before any conversion to
+// int, which is undefined behaviour when out of range) and returns what to store.
+bool checkLeaf(const json& slot, const json& value, const std::string& key, json& out, std::string& error) {
+    auto refuse = [&] {
+        error = "setting '" + key + "' expects " + expected(key, slot) + ", got " + shown(value);
+        return false;
+    };
+    if (slot.is_boolean()) {
+        if (!value.is_boolean()) return refuse();
+        out = value;
+    } else if (slot.is_number_integer()) {
+        if (!value.is_number()) return refuse();
+        const double v = value.get<double>();
+        if (!std::isfinite(v) || v != std::floor(v) || v < double(std::numeric_limits<int>::min()) ||
+            v > double(std::numeric_limits<int>::max()))
+            return refuse();
+        out = static_cast<int>(v);
+    } else if (slot.is_number()) {
+        if (!value.is_number() || !std::isfinite(value.get<double>())) return refuse();
+        out = value.get<double>();
+    } else if (slot.is_string()) {
+        if (!value.is_string()) return refuse();
+        const std::string choices = ", " + settingChoices(key) + ",";
+        if (choices.find(", " + value.get<std::string>() + ",") == std::string::npos) return refuse();
+        out = value;
+    } else if (key == "compare.methods") {
+        if (!value.is_array()) return refuse();
+        const std::string choices = ", " + settingChoices(key) + ",";
+        for (const json& item : value)
+            if (!item.is_string() || choices.find(", " + item.get<std::string>() + ",") == std::string::npos) {
+                error = "setting '" + key + "' expects " + expected(key, slot) + ", got the entry " + shown(item);
+                return false;
+            }
+        out = value;
+    } else {  // x, y, z
+        if (!value.is_array() || value.size() != 3) return refuse();
+        for (const json& v : value)
+            if (!v.is_number() || !std::isfinite(v.get<double>())) return refuse();
+        out = value;
+    }
+    return true;
 }
 
 // Copies `patch` onto `target`, refusing keys the settings do not have and values of another type.
 bool applyPatch(json& target, const json& patch, const std::string& path, std::string& error) {
     if (!patch.is_object()) {
-        error = "'" + path + "' must be an object";
+        error = "'" + cut(path) + "' must be an object";
         return false;
     }
     for (auto it = patch.begin(); it != patch.end(); ++it) {
         const std::string key = path.empty() ? it.key() : path + "." + it.key();
         if (!target.contains(it.key())) {
-            error = "unknown setting '" + key + "'";
+            error = "unknown setting '" + cut(key) + "' (see `shadowlab settings`)";
             return false;
         }
         json& slot = target[it.key()];
         if (slot.is_object()) {
             if (!applyPatch(slot, it.value(), key, error)) return false;
-        } else if (!sameKind(slot, it.value())) {
-            error = "setting '" + key + "' expects a " + typeName(slot) + ", got " + typeName(it.value());
-            return false;
         } else {
-            slot = it.value();
+            json checked;
+            if (!checkLeaf(slot, it.value(), key, checked, error)) return false;
+            slot = std::move(checked);
         }
     }
     return true;
 }
 
-// The first place where two JSON trees differ (after a round trip, that is a value the settings
-// could not take, e.g. an unknown enum name or 2.5 for an integer).
-std::string firstDifference(const json& want, const json& got, const std::string& path) {
-    if (want.is_object() && got.is_object()) {
-        for (auto it = want.begin(); it != want.end(); ++it) {
-            std::string d = firstDifference(it.value(), got.value(it.key(), json()), path.empty() ? it.key() : path + "." + it.key());
-            if (!d.empty()) return d;
-        }
-        return {};
-    }
-    return want == got ? std::string() : path;
-}
-
 bool fromJson(const json& patch, Settings& settings, std::string& error) {
     json merged = settings;
     if (!applyPatch(merged, patch, "", error)) return false;
-    Settings parsed;
     try {
-        parsed = merged.get<Settings>();
-    } catch (const json::exception& e) {
-        error = std::string("invalid settings: ") + e.what();
+        settings = merged.get<Settings>();  // every leaf was checked: nothing left to throw
+    } catch (const json::exception&) {
+        error = "invalid settings";
         return false;
     }
-    json roundTrip = parsed;
-    if (std::string where = firstDifference(merged, roundTrip, ""); !where.empty()) {
-        error = "invalid value for '" + where + "'";
-        {
-            json bad = merged;
-            std::istringstream parts(where);
-            for (std::string p; std::getline(parts, p, '.');) bad = bad.contains(p) ? bad[p] : json();
-            error += ": " + bad.dump();
-        }
-        return false;
-    }
-    settings = parsed;
     return true;
 }
 
@@ -147,20 +195,20 @@ void collectKeys(const json& j, const std::string& path, std::vector<std::string
     out.push_back(path + "=" + (j.is_string() ? j.get<std::string>() : j.dump()));
 }
 
-template <class T>
-bool clampValue(T& value, T lo, T hi, T fallback, const char* name, std::vector<std::string>& changes) {
-    T before = value;
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!std::isfinite(value)) value = fallback;
+// "1,2,3" or "ssm,psm" into a JSON array: numbers where every item is one, else names.
+json listValue(const std::string& value) {
+    json numbers = json::array(), names = json::array();
+    bool allNumbers = true;
+    std::istringstream items(value);
+    for (std::string item; std::getline(items, item, ',');) {
+        names.push_back(item);
+        json parsed = json::parse(item, nullptr, false);
+        if (parsed.is_number())
+            numbers.push_back(parsed);
+        else
+            allNumbers = false;
     }
-    value = std::clamp(value, lo, hi);
-    if (!(value == before)) {
-        std::ostringstream s;
-        s << name << ": " << before << " -> " << value;
-        changes.push_back(s.str());
-        return true;
-    }
-    return false;
+    return allNumbers && !numbers.empty() ? numbers : names;
 }
 
 }  // namespace
@@ -168,9 +216,16 @@ bool clampValue(T& value, T lo, T hi, T fallback, const char* name, std::vector<
 std::string toJsonText(const Settings& settings) { return json(settings).dump(2); }
 
 bool fromJsonText(std::string_view text, Settings& settings, std::string& error) {
-    json patch = json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (patch.is_discarded()) {
-        error = "not valid JSON";
+    if (text.size() > kMaxSettingsJsonBytes) {
+        error = "settings JSON of " + std::to_string(text.size()) + " bytes; a view file is at most " +
+                std::to_string(kMaxSettingsJsonBytes) + " bytes";
+        return false;
+    }
+    json patch;
+    try {
+        patch = json::parse(text);
+    } catch (const json::parse_error& e) {
+        error = "not valid JSON at " + lineAndColumn(text, e.byte);
         return false;
     }
     return fromJson(patch, settings, error);
@@ -179,7 +234,7 @@ bool fromJsonText(std::string_view text, Settings& settings, std::string& error)
 bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& error) {
     const auto eq = keyEqualsValue.find('=');
     if (eq == std::string_view::npos || eq == 0) {
-        error = "expected key=value, got '" + std::string(keyEqualsValue) + "'";
+        error = "expected key=value, got '" + cut(keyEqualsValue) + "'";
         return false;
     }
     const std::string key(keyEqualsValue.substr(0, eq));
@@ -190,7 +245,7 @@ bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& 
     std::istringstream keyStream(key);
     for (std::string p; std::getline(keyStream, p, '.');) {
         if (!slot->is_object() || !slot->contains(p)) {
-            error = "unknown setting '" + key + "' (see --list-settings)";
+            error = "unknown setting '" + cut(key) + "' (see `shadowlab settings`)";
             return false;
         }
         slot = &(*slot)[p];
@@ -200,27 +255,22 @@ bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& 
     if (slot->is_boolean()) {
         bool b = false;
         if (!parseBool(value, b)) {
-            error = "setting '" + key + "' expects true/false, got '" + value + "'";
+            error = "setting '" + key + "' expects true/false, got '" + cut(value) + "'";
             return false;
         }
         parsed = b;
     } else if (slot->is_number()) {
         parsed = json::parse(value, nullptr, false);
         if (!parsed.is_number()) {
-            error = "setting '" + key + "' expects a number, got '" + value + "'";
+            error = "setting '" + key + "' expects " + expected(key, *slot) + ", got '" + cut(value) + "'";
             return false;
         }
     } else if (slot->is_string()) {
         parsed = value;
     } else if (slot->is_array()) {  // vectors and method lists: comma separated
-        parsed = json::parse("[" + value + "]", nullptr, false);
-        if (parsed.is_discarded()) {  // a list of bare names
-            parsed = json::array();
-            std::istringstream items(value);
-            for (std::string item; std::getline(items, item, ',');) parsed.push_back(item);
-        }
+        parsed = listValue(value);
     } else {
-        error = "setting '" + key + "' is a group; set one of its members";
+        error = "setting '" + key + "' is a group; set one of its members (see `shadowlab settings`)";
         return false;
     }
     json patch = parsed;
@@ -232,67 +282,6 @@ std::vector<std::string> settingKeys(const Settings& settings) {
     std::vector<std::string> keys;
     collectKeys(json(settings), "", keys);
     return keys;
-}
-
-std::vector<std::string> sanitize(Settings& s) {
-    std::vector<std::string> changes;
-    const Settings defaults;
-    // Shadow map sizes are powers of two; the clamp keeps a typo from asking for 1e6^2 texels.
-    int size = std::clamp(s.shadowMapSize, 256, 8192);
-    int pow2 = 256;
-    while (pow2 < size) pow2 *= 2;
-    if (pow2 != s.shadowMapSize) {
-        changes.push_back("shadowMapSize: " + std::to_string(s.shadowMapSize) + " -> " + std::to_string(pow2));
-        s.shadowMapSize = pow2;
-    }
-    auto& c = s.camera;
-    for (int i = 0; i < 3; ++i)
-        clampValue(c.position[i], -1e7, 1e7, defaults.camera.position[i], "camera.position", changes);
-    clampValue(c.yawDeg, -1e6, 1e6, 0.0, "camera.yawDeg", changes);
-    clampValue(c.pitchDeg, -89.9, 89.9, 0.0, "camera.pitchDeg", changes);
-    clampValue(c.fovYDeg, 1.0, 170.0, defaults.camera.fovYDeg, "camera.fovYDeg", changes);
-    clampValue(c.nearPlane, 1e-5, 1e6, defaults.camera.nearPlane, "camera.nearPlane", changes);
-    clampValue(c.farPlane, c.nearPlane * 1.001, 1e9, std::max(defaults.camera.farPlane, c.nearPlane * 2), "camera.farPlane", changes);
-    clampValue(c.moveSpeed, 1e-4, 1e6, defaults.camera.moveSpeed, "camera.moveSpeed", changes);
-    auto& l = s.light;
-    clampValue(l.sceneLight, 0, 1 << 20, 0, "light.sceneLight", changes);
-    clampValue(l.azimuthDeg, -1e6, 1e6, defaults.light.azimuthDeg, "light.azimuthDeg", changes);
-    clampValue(l.elevationDeg, -90.0, 90.0, defaults.light.elevationDeg, "light.elevationDeg", changes);
-    clampValue(l.spotOuterConeDeg, 1.0, 89.0, defaults.light.spotOuterConeDeg, "light.spotOuterConeDeg", changes);
-    clampValue(l.spotRange, 0.0, 1e9, 0.0, "light.spotRange", changes);
-    clampValue(l.intensity, 0.0, 1e6, defaults.light.intensity, "light.intensity", changes);
-    clampValue(l.ambient, 0.0, 10.0, defaults.light.ambient, "light.ambient", changes);
-    for (int i = 0; i < 3; ++i) {
-        clampValue(l.color[i], 0.0, 1e3, 1.0, "light.color", changes);
-        clampValue(l.spotPosition[i], -1e7, 1e7, defaults.light.spotPosition[i], "light.spotPosition", changes);
-    }
-    clampValue(l.sunDegreesPerSecond, -3600.0, 3600.0, defaults.light.sunDegreesPerSecond, "light.sunDegreesPerSecond", changes);
-    clampValue(s.lispsm.virtualFar, 0.0, 1e9, 0.0, "lispsm.virtualFar", changes);
-    clampValue(s.lispsm.n, 1e-6, 1e9, defaults.lispsm.n, "lispsm.n", changes);
-    clampValue(s.bias.constant, -1.0, 1.0, defaults.bias.constant, "bias.constant", changes);
-    clampValue(s.bias.slopeFactor, -64.0, 64.0, defaults.bias.slopeFactor, "bias.slopeFactor", changes);
-    clampValue(s.bias.slopeUnits, -1e5, 1e5, defaults.bias.slopeUnits, "bias.slopeUnits", changes);
-    clampValue(s.filter.blurIterations, 0, 16, 0, "filter.blurIterations", changes);
-    clampValue(s.filter.blurStrength, 0.0, 16.0, defaults.filter.blurStrength, "filter.blurStrength", changes);
-    clampValue(s.compare.count, 1, 3, 1, "compare.count", changes);
-    if (s.compare.methods.size() < 3) {
-        changes.push_back("compare.methods: filled up to three entries");
-        for (std::size_t i = s.compare.methods.size(); i < 3; ++i) s.compare.methods.push_back(defaults.compare.methods[i]);
-    }
-    clampValue(s.animation.time, 0.0, 1e7, 0.0, "animation.time", changes);
-    clampValue(s.animation.speed, -100.0, 100.0, 1.0, "animation.speed", changes);
-    clampValue(s.display.exposureEv, -16.0, 16.0, 0.0, "display.exposureEv", changes);
-    {
-        // MSAA sample counts every GL 4.5 implementation offers for colour (GL_MAX_SAMPLES >= 4)
-        // and most for 8; anything else is rounded to the next of 1, 2, 4, 8.
-        const int asked = s.display.msaaSamples;
-        const int samples = asked <= 1 ? 1 : asked <= 2 ? 2 : asked <= 4 ? 4 : 8;
-        if (samples != asked) {
-            changes.push_back("display.msaaSamples: " + std::to_string(asked) + " -> " + std::to_string(samples));
-            s.display.msaaSamples = samples;
-        }
-    }
-    return changes;
 }
 
 const char* methodName(ShadowMethod method) {

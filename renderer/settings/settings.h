@@ -162,11 +162,31 @@ std::vector<std::string> sanitize(Settings& settings);
 
 std::string toJsonText(const Settings& settings);
 // Unknown keys and wrong types are errors (settings untouched); missing keys keep their current value.
+// A settings text is at most kMaxSettingsJsonBytes (a view file is ~2 KB); errors give line and column.
+constexpr std::size_t kMaxSettingsJsonBytes = 1 << 20;
 bool fromJsonText(std::string_view text, Settings& settings, std::string& error);
 // `--set bias.mode=slope` style: key is the JSON path, value parsed to the type found there.
 bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& error);
 // Every valid key with its current value, for --help and error messages.
 std::vector<std::string> settingKeys(const Settings& settings);
+
+// One line of `shadowlab settings`: every key with its type, valid range (or choices) and default.
+// The ranges are the ones sanitize() clamps to.
+struct SettingDescription {
+    std::string key;
+    std::string type;  // bool, integer, number, choice, list, x,y,z
+    std::string range;
+    std::string defaultValue;
+};
+std::vector<SettingDescription> describeSettings();
+// "ssm, ssm-unfocused, psm, lispsm" for a choice or list setting; empty for the others.
+std::string settingChoices(std::string_view key);
+// The clamping range of a numeric setting (false for the others).
+bool settingRange(std::string_view key, double& lo, double& hi);
+
+// Settings that the scene makes meaningless, as notices: light.sceneLight beyond the scene's
+// lights, light.animateSun while the light comes from the scene.
+std::vector<std::string> sceneNotices(const Settings& settings, std::size_t sceneLights);
 
 const char* methodName(ShadowMethod method);  // "ssm", "ssm-unfocused", "psm", "lispsm"
 bool parseMethod(std::string_view name, ShadowMethod& method);
