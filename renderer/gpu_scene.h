@@ -91,6 +91,9 @@ public:
     }
 
 private:
+    // Fills materials_ (texture ids included) and the material buffer. Whatever replaces a texture
+    // later (streamed decoding) must call it again, and the renderer must count it as a scene
+    // change: alpha-masked textures shape the shadow map (ShadowMapKey::sceneVersion).
     void uploadMaterials(const Scene& scene);
 
     gl::VertexArray vao_;

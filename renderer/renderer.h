@@ -3,8 +3,11 @@
 // a headless EGL context. Each pass sets the whole pipeline state it needs and restores what it
 // changed, so one pass never leaks culling, polygon offset or sRGB into the next.
 //
-//   shadow setup (GL-free math: B, SSM/PSM/LiSPSM matrix)  ->  caster culling against B
-//   shadow pass (depth map)  ->  [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
+//   view culling  ->  [visible-depth pre-pass, PSM auto near / LiSPSM auto z_f only]  ->
+//   shadow setup (GL-free math: B, SSM/PSM/LiSPSM matrix)  ->  caster culling against B  ->
+//   shadow pass (depth map; skipped when its key is unchanged)  ->
+//   [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
+// What a frame skips when it does not need it is switchable in Settings::skip (README).
 #include "culling/instance_culling.h"
 #include "frame_setup.h"
 #include "frame_stats.h"
