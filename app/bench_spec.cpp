@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <set>
 
@@ -102,8 +103,8 @@ BenchVariant parseVariant(const json& j, const std::string& key) {
 void parseInto(const json& root, const std::string& folder, BenchSpec& spec) {
     if (!root.is_object()) bad("(top level)", "expected a JSON object");
     for (const auto& [key, value] : root.items()) {
-        if (key == "width") spec.width = intIn(value, key, 16, 8192);
-        else if (key == "height") spec.height = intIn(value, key, 16, 8192);
+        if (key == "width") spec.width = intIn(value, key, 16, 3840 * 4);
+        else if (key == "height") spec.height = intIn(value, key, 16, 2160 * 4);
         else if (key == "warmup") spec.warmup = intIn(value, key, 0, 100);
         else if (key == "repeats") spec.repeats = intIn(value, key, 1, 1000);
         else if (key == "groundTruth") spec.groundTruth = boolean(value, key);
@@ -134,6 +135,9 @@ void parseInto(const json& root, const std::string& folder, BenchSpec& spec) {
         }
     }
     if (spec.scenes.empty()) bad("scenes", "missing: at least one scene is needed");
+    // The measurement pass keeps ~100 bytes per pixel on the GPU and the CPU.
+    if (std::int64_t(spec.width) * spec.height > kMaxMeasuredPixels)
+        bad("width", "width x height must stay within 3840 x 2160 pixels for the measurement pass");
     if (spec.caseCount() > 100000) bad("(top level)", "more than 100,000 cases");
 }
 

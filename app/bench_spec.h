@@ -22,6 +22,10 @@
 
 namespace shadowlab::app {
 
+// Pixels of one measured frame at most (3840 x 2160): the float targets and their read-back take
+// about 100 bytes per pixel.
+constexpr long long kMaxMeasuredPixels = 3840LL * 2160LL;
+
 struct BenchCamera {
     std::string name;    // scene camera name, or the view file
     int index = -1;      // scene camera index when given as a number

@@ -6,6 +6,7 @@
 #include "headless_context.h"
 #include "render_target.h"
 #include "accuracy.h"
+#include "bench_spec.h"
 #include "renderer.h"
 #include "scenes/animation.h"
 #include "render_compare.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -94,6 +96,8 @@ void checkImageSize(const RenderOptions& options) {
     if (!pngWritable(options.width * views, options.height, error))
         fail("--width " + std::to_string(options.width) + (views > 1 ? " x 3 methods" : "") + " by --height " +
                  std::to_string(options.height) + ": " + error, 2);
+    if (options.measure && std::int64_t(options.width) * options.height > kMaxMeasuredPixels)
+        fail("--measure works up to 3840 x 2160 pixels (the float measurement targets take ~100 bytes per pixel)", 2);
 }
 
 void checkGlSize(const RenderOptions& options) {
