@@ -37,7 +37,8 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
     }
     // Insets along the bottom edge of the 3D area, left to right, as many as are switched on.
     const int margin = 12;
-    const int side = std::max(64, std::min({fbHeight / 3, l.viewWidth / 4, 360}));
+    const double size = std::clamp(settings.overlays.insetSize, 0.5, 2.5);
+    const int side = std::max(64, int(size * std::min({fbHeight / 3, l.viewWidth / 4, 360})));
     int x = margin;
     const int y = fbHeight - side - margin;
     auto place = [&](InsetRect& r, bool on, int width) {
@@ -71,7 +72,9 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
     if (!layout.shadowMapInset.empty()) {
         const InsetRect r = toGl(layout.shadowMapInset, fbHeight);
         overlays.drawFrame(0, r);
-        if (haveMap) overlays.drawDepthInset(0, r, renderer.shadowMapTexture(), setup.reverseDepthTest);
+        if (haveMap)
+            overlays.drawDepthInset(0, r, renderer.shadowMapTexture(), setup.reverseDepthTest,
+                                    {float(settings.overlays.depthWindowLow), float(settings.overlays.depthWindowHigh)});
         noteFor(layout.shadowMapInset, haveMap ? "shadow map" : "no shadow map");
     }
     if (!layout.lightViewInset.empty()) {

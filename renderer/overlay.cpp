@@ -115,12 +115,13 @@ void OverlayRenderer::drawFrame(GLuint framebuffer, const InsetRect& rect) const
 }
 
 void OverlayRenderer::drawDepthInset(GLuint framebuffer, const InsetRect& rect, GLuint depthTexture,
-                                     bool reversed) const {
+                                     bool reversed, glm::vec2 window) const {
     if (rect.empty() || depthTexture == 0) return;
     GlStateGuard guard;
     enterRect(framebuffer, rect);
     depth_.use();
     depth_.set("uReversed", reversed ? 1 : 0);
+    depth_.set("uWindow", window);
     glBindTextureUnit(0, depthTexture);
     glBindSampler(0, depthSampler_.id());
     glBindVertexArray(emptyVao_.id());

@@ -33,7 +33,9 @@ public:
     void drawFrame(GLuint framebuffer, const InsetRect& rect) const;
     // The depth texture (effective depth, see inset_depth.frag). `reversed`: the map was written
     // with GL_GREATER (PSM with an inverted light).
-    void drawDepthInset(GLuint framebuffer, const InsetRect& rect, GLuint depthTexture, bool reversed) const;
+    // `window`: the part of the fitted depth range stretched over dark..bright ({0, 1}: all of it).
+    void drawDepthInset(GLuint framebuffer, const InsetRect& rect, GLuint depthTexture, bool reversed,
+                        glm::vec2 window = {0.0f, 1.0f}) const;
     // The scene through `worldToClip` with simple two-sided diffuse lighting. `reversedDepth`
     // uses GL_GREATER (for the inverted PSM light, whose matrix stores the far side as larger z).
     // Depth is clamped, so geometry beyond the near/far planes is still drawn.

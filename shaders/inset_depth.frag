@@ -1,11 +1,13 @@
 #version 450 core
 // The shadow map's depth as an inset: the effective depth (growing along the light's travel, so
-// reversed PSM maps read the same way) stretched over the range found on a coarse grid of texels,
-// near = dark, far = bright; texels nothing was drawn into are dark blue.
+// reversed PSM maps read the same way) stretched over the range found on a grid of texels (and
+// within it the window the user picked), near = dark, far = bright; texels nothing was drawn into
+// are dark blue.
 in vec2 vUv;
 
 layout(binding = 0) uniform sampler2D uDepth;  // bound with a plain (non-compare) sampler
 uniform bool uReversed;
+uniform vec2 uWindow;  // the shown part of the fitted range, [low, high] in 0..1 (the inset's range slider)
 
 out vec4 outColor;
 
@@ -17,7 +19,8 @@ float effectiveDepth(vec2 uv) {
 void main() {
     const float kEmpty = 0.9999999;
     float lo = 1.0, hi = 0.0;
-    const int kGrid = 8;
+    // 24 x 24 texels: a finer grid finds the extremes of maps whose geometry covers little of them.
+    const int kGrid = 24;
     for (int j = 0; j < kGrid; ++j)
         for (int i = 0; i < kGrid; ++i) {
             float e = effectiveDepth((vec2(i, j) + 0.5) / float(kGrid));
@@ -32,6 +35,7 @@ void main() {
         return;
     }
     float range = max(hi - lo, 1e-6);
-    float v = clamp((e - lo) / range, 0.0, 1.0);
+    float window = max(uWindow.y - uWindow.x, 1e-4);
+    float v = clamp(((e - lo) / range - uWindow.x) / window, 0.0, 1.0);
     outColor = vec4(vec3(0.08 + 0.92 * v), 1.0);
 }

@@ -64,7 +64,7 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
         ImGui::End();
         return result;
     }
-    ImGui::PushItemWidth(kControlWidth * 0.5f);
+    ImGui::PushItemWidth(kControlWidth * 0.55f);
     static const FrameStats kNoStats{};
     const FrameStats& stats = ctx.stats ? *ctx.stats : kNoStats;
     static const Scene kNoScene{};

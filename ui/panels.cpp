@@ -22,11 +22,11 @@ const char* methodLabel(ShadowMethod m) {
         case ShadowMethod::SsmFocused:
             return "SSM (focused on B)";
         case ShadowMethod::SsmUnfocused:
-            return "SSM (unfocused, whole scene)";
+            return "SSM (unfocused)";
         case ShadowMethod::Psm:
             return "PSM (perspective)";
         case ShadowMethod::Lispsm:
-            return "LiSPSM (light space perspective)";
+            return "LiSPSM (light space)";
     }
     return "?";
 }
@@ -156,10 +156,17 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtual
                         "Use a manual n instead of n_opt (thesis 8.2, 9.2.5). Small n = strong perspective warp "
                         "(PSM-like), large n = uniform (SSM-like).");
     ImGui::BeginDisabled(!l.overrideN);
-    changed |= sliderDouble("n", l.n, 1e-3, 1e4, "%.4g",
-                            "Distance of the projection centre C to the near plane of P, in light space "
-                            "(thesis 8.1, Fig. 8.1; 9.2.4). Log scale.",
-                            ImGuiSliderFlags_Logarithmic);
+    {
+        // Without the override the slider shows (greyed) the n this frame used, not the stored one.
+        double shown = l.overrideN || !std::isfinite(d.nUsed) || d.nUsed <= 0.0 ? l.n : d.nUsed;
+        if (sliderDouble("n", shown, 1e-3, 1e4, "%.4g",
+                         "Distance of the projection centre C to the near plane of P, in light space (thesis 8.1, "
+                         "Fig. 8.1; 9.2.4). Log scale. Greyed: the n used this frame (n_opt).",
+                         ImGuiSliderFlags_Logarithmic)) {
+            l.n = shown;
+            changed = true;
+        }
+    }
     ImGui::EndDisabled();
 
     ImGui::Separator();
@@ -461,6 +468,21 @@ bool drawOverlayPanel(Settings& s, ObserverView& observer) {
                         "LiSPSM: the perspective frustum P and its projection centre C (thesis 8.1 Fig. 8.1, 9.2.4 "
                         "Fig. 9.1); PSM: the post-perspective light mapped back, when finite. Spot lights also "
                         "show their frustum L (orange).");
+    ImGui::TextDisabled("also drawn: orange lines = light rays / spot frustum L,");
+    ImGui::TextDisabled("yellow star = projection centre C of P (LiSPSM)");
+    ImGui::BeginDisabled(!o.shadowMapInset);
+    float window[2] = {float(o.depthWindowLow), float(o.depthWindowHigh)};
+    if (ImGui::DragFloatRange2("depth range", &window[0], &window[1], 0.005f, 0.0f, 1.0f, "%.3f", "%.3f",
+                               ImGuiSliderFlags_AlwaysClamp)) {
+        o.depthWindowLow = window[0];
+        o.depthWindowHigh = std::max(window[1], window[0] + 1e-3f);
+        changed = true;
+    }
+    tip("The shadow-map inset stretches the depth range found in the map (its nearest to farthest texel) from dark "
+        "to bright; narrow it here to see detail inside a small part of that range.");
+    ImGui::EndDisabled();
+    changed |= sliderDouble("inset size", o.insetSize, 0.5, 2.5, "%.2fx",
+                            "Size of the insets, x a third of the view height.");
     ImGui::BeginDisabled(!o.observerInset);
     sliderDouble("observer yaw", observer.yawDeg, -180.0, 180.0, "%.0f deg",
                  "Where the third-person observer stands around the camera, as in thesis Figs. 4.2, 8.1, 9.1 (viewer "

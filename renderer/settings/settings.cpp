@@ -55,7 +55,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depth
                                    blurStrength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DisplaySettings, exposureEv, toneMapping, hemisphereAmbient, msaaSamples)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OverlaySettings, shadowMapInset, lightViewInset, observerInset, drawB, drawV,
-                                   drawS, drawP)
+                                   drawS, drawP, depthWindowLow, depthWindowHigh, insetSize)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,

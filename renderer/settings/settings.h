@@ -98,6 +98,9 @@ struct OverlaySettings {
     bool drawV = true;
     bool drawS = true;
     bool drawP = true;
+    // Part of the shadow map's fitted depth range the inset stretches from dark to bright.
+    double depthWindowLow = 0.0, depthWindowHigh = 1.0;
+    double insetSize = 1.0;  // x the default inset size (a third of the view height)
     bool operator==(const OverlaySettings&) const = default;
 };
 

@@ -63,6 +63,9 @@ const NumberSetting kNumbers[] = {
     REAL("animation.speed", animation.speed, -100.0, 100.0),
     REAL("display.exposureEv", display.exposureEv, -16.0, 16.0),
     INTEGER("display.msaaSamples", display.msaaSamples, 1, 8),  // and 1, 2, 4 or 8, below
+    REAL("overlays.depthWindowLow", overlays.depthWindowLow, 0.0, 1.0),
+    REAL("overlays.depthWindowHigh", overlays.depthWindowHigh, 0.0, 1.0),  // and >= the low end, below
+    REAL("overlays.insetSize", overlays.insetSize, 0.5, 2.5),
 };
 
 #undef REAL
@@ -143,6 +146,11 @@ std::vector<std::string> sanitize(Settings& s) {
             changes.push_back("display.msaaSamples: " + std::to_string(asked) + " -> " + std::to_string(samples));
             s.display.msaaSamples = samples;
         }
+    }
+    if (s.overlays.depthWindowHigh < s.overlays.depthWindowLow) {
+        changes.push_back("overlays.depthWindowHigh: " + number(s.overlays.depthWindowHigh) + " -> " +
+                          number(s.overlays.depthWindowLow));
+        s.overlays.depthWindowHigh = s.overlays.depthWindowLow;
     }
     auto& c = s.camera;
     if (!(c.farPlane > c.nearPlane * 1.001)) {
