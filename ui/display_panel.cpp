@@ -6,6 +6,19 @@
 
 namespace shadowlab::ui {
 
+namespace {
+// A combo over parallel arrays of values and names; true when `value` changed.
+template <class T, int N>
+bool valueCombo(const char* label, T& value, const T (&values)[N], const char* const (&names)[N]) {
+    int current = 0;
+    for (int i = 0; i < N; ++i)
+        if (values[i] == value) current = i;
+    if (!ImGui::Combo(label, &current, names, N) || values[current] == value) return false;
+    value = values[current];
+    return true;
+}
+}  // namespace
+
 bool drawDisplayPanel(Settings& s) {
     bool changed = false;
     DisplaySettings& d = s.display;
@@ -14,13 +27,7 @@ bool drawDisplayPanel(Settings& s) {
                             "aliasing-error views are measurements and ignore it.");
     static const ToneMapping kOps[] = {ToneMapping::None, ToneMapping::PbrNeutral, ToneMapping::Aces};
     static const char* const kNames[] = {"none (linear, for measuring)", "Khronos PBR Neutral", "ACES (filmic)"};
-    int current = 0;
-    for (int i = 0; i < 3; ++i)
-        if (kOps[i] == d.toneMapping) current = i;
-    if (ImGui::Combo("tone mapping", &current, kNames, 3)) {
-        d.toneMapping = kOps[current];
-        changed = true;
-    }
+    changed |= valueCombo("tone mapping", d.toneMapping, kOps, kNames);
     tip("Maps the linear lit colour into the displayable range before the sRGB encode. PBR Neutral keeps base "
         "colours and compresses only highlights; ACES is filmic (more contrast); none clips at 1.");
     changed |= checkbox("hemisphere ambient", d.hemisphereAmbient,
@@ -28,13 +35,7 @@ bool drawDisplayPanel(Settings& s) {
                         "so shadowed regions keep their shape. Still never shadowed (thesis 6.2).");
     static const int kSamples[] = {1, 2, 4, 8};
     static const char* const kSampleNames[] = {"off", "2x", "4x", "8x"};
-    int sampleIndex = 0;
-    for (int i = 0; i < 4; ++i)
-        if (kSamples[i] == d.msaaSamples) sampleIndex = i;
-    if (ImGui::Combo("anti-aliasing", &sampleIndex, kSampleNames, 4)) {
-        d.msaaSamples = kSamples[sampleIndex];
-        changed = true;
-    }
+    changed |= valueCombo("anti-aliasing", d.msaaSamples, kSamples, kSampleNames);
     tip("Multisample anti-aliasing of the lit view (silhouettes, not shadow edges: those are the shadow map's "
         "sampling, thesis ch. 3). Costs fill rate, much of it on a software rasteriser.");
     return changed;

@@ -45,8 +45,10 @@ struct Sender {
     Time time = 1000;
     int x = 0, y = 0;
 
-    void key(const char* name, int type) {
-        XKeyEvent e{};
+    // The fields every synthetic key, button and motion event shares.
+    template <class Event>
+    Event event(int type) {
+        Event e{};
         e.type = type;
         e.display = d;
         e.window = window;
@@ -55,35 +57,23 @@ struct Sender {
         e.x = x;
         e.y = y;
         e.same_screen = True;
+        return e;
+    }
+    void key(const char* name, int type) {
+        XKeyEvent e = event<XKeyEvent>(type);
         e.keycode = XKeysymToKeycode(d, XStringToKeysym(name));
         XSendEvent(d, window, True, type == KeyPress ? KeyPressMask : KeyReleaseMask, reinterpret_cast<XEvent*>(&e));
     }
     void button(unsigned b, int type) {
-        XButtonEvent e{};
-        e.type = type;
-        e.display = d;
-        e.window = window;
-        e.root = root;
-        e.time = time += 50;
-        e.x = x;
-        e.y = y;
+        XButtonEvent e = event<XButtonEvent>(type);
         e.button = b;
-        e.same_screen = True;
         XSendEvent(d, window, True, type == ButtonPress ? ButtonPressMask : ButtonReleaseMask,
                    reinterpret_cast<XEvent*>(&e));
     }
     void motion(int nx, int ny) {
         x = nx;
         y = ny;
-        XMotionEvent e{};
-        e.type = MotionNotify;
-        e.display = d;
-        e.window = window;
-        e.root = root;
-        e.time = time += 50;
-        e.x = x;
-        e.y = y;
-        e.same_screen = True;
+        XMotionEvent e = event<XMotionEvent>(MotionNotify);
         XSendEvent(d, window, True, PointerMotionMask, reinterpret_cast<XEvent*>(&e));
     }
     void close() {
