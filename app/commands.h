@@ -21,6 +21,7 @@ void addGenerateCommand(CLI::App& app);  // shadowlab generate NAME --out FILE.g
 void addBenchCommand(CLI::App& app);     // shadowlab bench SPEC.json|--quick --out DIR
 
 void addSettingsCommand(CLI::App& app);  // shadowlab settings: every setting and load limit
+void addSoakCommand(CLI::App& app);      // shadowlab soak [SCENE] --frames N
 
 // `--limit KEY=N` (repeatable) on a command that loads a scene, and applying what it collected.
 void addLoadLimitOption(CLI::App& cmd, std::vector<std::string>& limits);

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
     shadowlab::app::addStressCommand(app);
     shadowlab::app::addGenerateCommand(app);
     shadowlab::app::addSettingsCommand(app);
+    shadowlab::app::addSoakCommand(app);
     shadowlab::app::addBenchCommand(app);
     shadowlab::app::addViewerOptions(app);
     CLI11_PARSE(app, argc, argv);

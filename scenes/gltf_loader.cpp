@@ -45,8 +45,14 @@ void finiteFarPlanes(Scene& scene) {
     }
 }
 
-Scene loadChecked(const fs::path& file, const LoadOptions& options, std::vector<std::string>& warnings) {
-    std::vector<unsigned char> bytes = readFileBytes(file, options.limits);
+// `name` is what messages and Scene::source call the file (its extension tells .glb without the
+// magic apart); external buffers and images are looked up in `baseDir`.
+Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs::path& baseDir,
+                const LoadOptions& options, std::vector<std::string>& warnings) {
+    if (bytes.empty()) fail("the file is empty");
+    if (bytes.size() > options.limits.fileBytes)
+        fail("the file's " + std::to_string(bytes.size()) + " bytes " + overLimit("fileBytes", options.limits.fileBytes));
+    const fs::path& file = name;
     const bool glb = isGlb(bytes);
     std::string jsonText;
     if (glb) {
@@ -62,7 +68,7 @@ Scene loadChecked(const fs::path& file, const LoadOptions& options, std::vector<
     const json root = parseJson(jsonText, options.limits);
     checkAssetAndExtensions(root, warnings);
     checkDeclaredCounts(root, options.limits);
-    checkExternalFiles(root, file.parent_path().empty() ? fs::path(".") : file.parent_path());
+    checkExternalFiles(root, baseDir);
 
     tinygltf::Model model;
     tinygltf::TinyGLTF gltf;
@@ -71,10 +77,10 @@ Scene loadChecked(const fs::path& file, const LoadOptions& options, std::vector<
     capture.wanted = baseColorImages(root);
     gltf.SetImageLoader(&captureImage, &capture);
     std::string err, warn;
-    const std::string baseDir = file.parent_path().empty() ? std::string(".") : file.parent_path().string();
-    const bool parsed = glb ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
+    const bool parsed = glb ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
+                                                        baseDir.string())
                             : gltf.LoadASCIIFromString(&model, &err, &warn, jsonText.c_str(),
-                                                       unsigned(jsonText.size()), baseDir);
+                                                       unsigned(jsonText.size()), baseDir.string());
     if (!parsed) fail(err.empty() ? std::string("tinygltf could not parse it") : cleanMessage(err).substr(0, 400));
     bytes = {};
     jsonText = {};
@@ -86,7 +92,7 @@ Scene loadChecked(const fs::path& file, const LoadOptions& options, std::vector<
     }
 
     Scene scene;
-    scene.source = file.string();
+    scene.source = name.string();
     Converter converter(model, root, capture, options, warnings, scene);
     converter.convert();
 
@@ -120,10 +126,14 @@ constexpr LimitField kLimitFields[] = {
 }  // namespace
 }  // namespace gltf
 
-LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& options) {
+namespace {
+
+template <class Load>
+LoadResult loadReporting(const std::filesystem::path& name, Load&& load) {
     LoadResult result;
+    const std::filesystem::path& file = name;
     try {
-        Scene scene = gltf::loadChecked(file, options, result.warnings);
+        Scene scene = load(result.warnings);
         scene.warnings = result.warnings;
         result.scene = std::move(scene);
     } catch (const gltf::LoadFailure& e) {
@@ -136,6 +146,22 @@ LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& optio
         result.error = file.string() + ": unknown error while loading";
     }
     return result;
+}
+
+}  // namespace
+
+LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& options) {
+    return loadReporting(file, [&](std::vector<std::string>& warnings) {
+        const std::filesystem::path baseDir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+        return gltf::loadBytes(gltf::readFileBytes(file, options.limits), file, baseDir, options, warnings);
+    });
+}
+
+LoadResult loadSceneFromMemory(const std::vector<unsigned char>& bytes, const std::filesystem::path& name,
+                               const std::filesystem::path& baseDir, const LoadOptions& options) {
+    return loadReporting(name, [&](std::vector<std::string>& warnings) {
+        return gltf::loadBytes(bytes, name, baseDir, options, warnings);
+    });
 }
 
 bool setLoadLimit(LoadLimits& limits, std::string_view keyEqualsValue, std::string& error) {

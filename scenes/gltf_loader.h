@@ -53,6 +53,11 @@ struct LoadResult {
 // Thread-safe: no shared state, so scenes may be loaded on a worker thread while another renders.
 LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& options = {});
 
+// The same from bytes already in memory (a fuzzer, a network): `name` names it in messages and
+// (by its extension) tells a .glb without the magic apart; external files resolve in `baseDir`.
+LoadResult loadSceneFromMemory(const std::vector<unsigned char>& bytes, const std::filesystem::path& name,
+                               const std::filesystem::path& baseDir, const LoadOptions& options = {});
+
 // Decodes a texture loaded with TextureDecoding::Deferred into rgba8 and drops its encoded bytes.
 // Touches only `texture`: textures may be decoded on several threads at once. False with `error`.
 bool decodeTexture(Texture& texture, std::string& error);

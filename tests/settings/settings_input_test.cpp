@@ -124,7 +124,9 @@ TEST(SettingsInput, TheListingDescribesEveryKeyWithTheRangeSanitizeUses) {
         EXPECT_FALSE(d.type.empty()) << d.key;
         EXPECT_FALSE(d.range.empty()) << d.key;
         EXPECT_FALSE(d.defaultValue.empty()) << d.key;
-        if (d.type == "choice" || d.type == "list") EXPECT_FALSE(settingChoices(d.key).empty()) << d.key;
+        if (d.type == "choice" || d.type == "list") {
+            EXPECT_FALSE(settingChoices(d.key).empty()) << d.key;
+        }
     }
     for (const std::string& keyValue : settingKeys(Settings{}))
         EXPECT_TRUE(keys.count(keyValue.substr(0, keyValue.find('=')))) << keyValue;
