@@ -103,13 +103,16 @@ bool readViewFile(const std::string& file, Settings& settings, std::string& erro
 
 bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error) {
     if (!overrides.viewFile.empty() && !readViewFile(overrides.viewFile, settings, error)) return false;
-    if (!overrides.method.empty() && overrides.method != "all") {
+    if (overrides.method == "csm") {
+        settings.csm.enabled = true;  // cascades: csm.splits, csm.lambda, csm.perSplit (--set)
+    } else if (!overrides.method.empty() && overrides.method != "all") {
         ShadowMethod m{};
         if (!parseMethod(overrides.method, m)) {
-            error = "unknown method '" + overrides.method + "' (ssm, ssm-unfocused, psm, lispsm, all)";
+            error = "unknown method '" + overrides.method + "' (ssm, ssm-unfocused, psm, lispsm, csm, all)";
             return false;
         }
         settings.method = m;
+        settings.csm.enabled = false;
     }
     for (const std::string& s : overrides.sets)
         if (!setByKey(settings, s, error)) return false;

@@ -67,6 +67,9 @@ std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     if (!depthLinear) return nullptr;
     auto blur = gl::Program::build("fullscreen.vert", "blur.frag", "", error);
     if (!blur) return nullptr;
+    auto forwardCascaded = MaterialPrograms::build("forward.vert", "forward.frag", "#define CASCADES 1\n", error);
+    if (!forwardCascaded) return nullptr;
+    r->forwardCascaded_ = std::move(*forwardCascaded);
     r->forward_ = std::move(*forward);
     r->shadowDepth_ = std::move(*depth);
     r->shadowDepthLinear_ = std::move(*depthLinear);
@@ -177,7 +180,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     if (!gpuScene_) return stats;
     cullView(frame, stats);
 
-    if (settings.shadows && frame.light.castsShadow) {
+    if (settings.shadows && frame.light.castsShadow && settings.csm.enabled) {
+        setupCascades(frame, stats);  // cascade_pass.cpp: per-split B_i, matrices, caster culling
+    } else if (settings.shadows && frame.light.castsShadow) {
         const bool psmAutoNear = settings.method == ShadowMethod::Psm && settings.psm.autoNear;
         const bool lispsmAutoFar = settings.method == ShadowMethod::Lispsm && settings.lispsm.autoVirtualFar;
         // Neither feature on: no pre-pass at all.
@@ -201,7 +206,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         lastSetup_ = frame.shadow;
         frame.shadowed = frame.shadow.valid;
     }
-    if (frame.shadowed) {
+    if (frame.shadowed && !frame.cascaded) {
         frame.worldToShadowClip = frame.shadow.worldToShadowClip;  // w > 0 over B by contract
         frame.linearDepth = settings.bias.distribution == DepthDistribution::Linear;
         // Linear depth grows away from the light whatever the warp, so it never needs reversing.
@@ -216,7 +221,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     stats.passes.push_back({"setup + culling (CPU)", msSince(setupStart) - prePassMs, 0.0});
     timedPasses_.clear();
 
-    if (frame.shadowed) {
+    if (frame.cascaded) {
+        cascadeShadowPass(frame, stats);
+    } else if (frame.shadowed) {
+        cascadeMaps_.release();
         ShadowMapKey key = shadowMapKey(frame);
         currentMap_ = selectShadowMap(key, settings.compare.count);
         stats.shadowMapReused = settings.skip.reuseShadowMap && shadowMap().holds(key);
@@ -266,11 +274,18 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
 void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     const auto cpuStart = Clock::now();
     shadowTimer_.begin();
-    const Settings& s = frame.settings;
-    shadowMap().ensure(s.shadowMapSize);
+    shadowMap().ensure(frame.settings.shadowMapSize);
     stats.shadowMapSize = shadowMap().size();
-    glBindFramebuffer(GL_FRAMEBUFFER, shadowMap().framebuffer());
-    glViewport(0, 0, shadowMap().size(), shadowMap().size());
+    drawShadowDepth(frame, shadowMap().framebuffer(), shadowMap().size(), stats.shadowPass);
+    shadowTimer_.end();
+    stats.passes.push_back({"shadow map", msSince(cpuStart), shadowTimer_.lastMs()});
+    timedPasses_.push_back({stats.passes.size() - 1, &shadowTimer_});
+}
+
+void Renderer::drawShadowDepth(const Frame& frame, GLuint framebuffer, int size, PassCounts& counts) {
+    const Settings& s = frame.settings;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, size, size);
     // Inverted PSM lights store the far side as larger depth: clear to 0 and keep the greater.
     const GLfloat clearDepth = frame.reversedDepth ? 0.0f : 1.0f;
     glDepthMask(GL_TRUE);
@@ -299,8 +314,7 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     };
     const ProgramFor programs = passPrograms(frame.linearDepth ? shadowDepthLinear_ : shadowDepth_, true, s, setup);
     // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
-    drawScene(programs, frame, frame.casters, s.bias.backFaces, stats.shadowPass, Surfaces::All,
-              frame.shadowMapMirrored);
+    drawScene(programs, frame, frame.casters, s.bias.backFaces, counts, Surfaces::All, frame.shadowMapMirrored);
 
     glDisable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(0.0f, 0.0f);
@@ -308,9 +322,6 @@ void Renderer::shadowPass(const Frame& frame, FrameStats& stats) {
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
     unbindPassResources({0});
-    shadowTimer_.end();
-    stats.passes.push_back({"shadow map", msSince(cpuStart), shadowTimer_.lastMs()});
-    timedPasses_.push_back({stats.passes.size() - 1, &shadowTimer_});
 }
 
 void Renderer::setLightingUniforms(const gl::Program& program, const Frame& frame, bool useBlurredTerm) const {
@@ -335,6 +346,7 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uShadowsEnabled", frame.shadowed ? 1 : 0);
     program.set("uUseBlurredTerm", useBlurredTerm ? 1 : 0);
     glProgramUniform2i(program.id(), program.location("uViewportOrigin"), frame.viewport.x, frame.viewport.y);
+    program.set("uNormalOffset", float(s.bias.normalOffset));
     if (!frame.shadowed) return;
     setShadowClip(program, frame.worldToShadowClip, frame.view.eye);
     program.set("uReverseDepth", frame.reversedDepth ? 1 : 0);
@@ -345,6 +357,10 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
     program.set("uShadowFilter", int(s.filter.filter));
     program.set("uConstantOffset", s.bias.mode == DepthOffset::Constant ? float(s.bias.constant) : 0.0f);
+    if (frame.cascaded) {
+        setCascadeUniforms(program, frame);  // cascade_pass.cpp: the array, per-split matrices
+        return;
+    }
     program.set("uShadowTexel", glm::vec2(1.0f / float(shadowMap().size())));
     glBindTextureUnit(1, shadowMap().texture());
     glBindSampler(1, shadowMap().sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware, frame.reversedDepth));
@@ -367,7 +383,7 @@ void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
     glDepthFunc(GL_LESS);
     Frame termFrame = frame;
     termFrame.viewport = Viewport{termTargets_.framebuffer(0), 0, 0, vp.width, vp.height};
-    const ProgramFor programs = passPrograms(forward_, false, frame.settings, [&](const gl::Program& program) {
+    const ProgramFor programs = passPrograms(forwardFor(frame), false, frame.settings, [&](const gl::Program& program) {
         setLightingUniforms(program, termFrame, false);
         program.set("uOutputMode", 2);
     });
@@ -453,7 +469,7 @@ void Renderer::forwardPass(const Frame& viewFrame, FrameStats& stats) {
                            : mode == ViewMode::AliasingError    ? 3
                            : mode == ViewMode::AliasingErrorRaw ? 4
                                                                 : 0;
-    const ProgramFor programs = passPrograms(forward_, false, frame.settings, [&](const gl::Program& program) {
+    const ProgramFor programs = passPrograms(forwardFor(frame), false, frame.settings, [&](const gl::Program& program) {
         setLightingUniforms(program, frame, useBlurredTerm);
         program.set("uOutputMode", outputMode);
     });

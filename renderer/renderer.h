@@ -8,6 +8,7 @@
 //   shadow pass (depth map; skipped when its key is unchanged)  ->
 //   [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
 // What a frame skips when it does not need it is switchable in Settings::skip (README).
+#include "cascade_maps.h"
 #include "culling/instance_culling.h"
 #include "frame_setup.h"
 #include "frame_stats.h"
@@ -83,6 +84,14 @@ private:
     void cullCasters(Frame& frame, FrameStats& stats) const;
     ShadowMapKey shadowMapKey(const Frame& frame) const;
     void shadowPass(const Frame& frame, FrameStats& stats);
+    // The depth of frame.casters through frame.worldToShadowClip into a square depth target.
+    void drawShadowDepth(const Frame& frame, GLuint framebuffer, int size, PassCounts& counts);
+    // Cascaded shadow maps (cascade_pass.cpp): per-split setups and caster culling, one shadow
+    // pass per split into its layer, and the lookup's uniforms.
+    void setupCascades(Frame& frame, FrameStats& stats);
+    void cascadeShadowPass(const Frame& frame, FrameStats& stats);
+    void setCascadeUniforms(const gl::Program& program, const Frame& frame) const;
+    MaterialPrograms& forwardFor(const Frame& frame);
     void shadowTermPass(const Frame& frame, FrameStats& stats);
     void blurPasses(const Frame& frame, FrameStats& stats);
     void forwardPass(const Frame& frame, FrameStats& stats);
@@ -103,6 +112,7 @@ private:
                    PassCounts& counts, Surfaces surfaces = Surfaces::All, bool targetMirrored = false) const;
 
     MaterialPrograms forward_;
+    MaterialPrograms forwardCascaded_;    // forward.frag with CASCADES: the split picked by eye depth
     MaterialPrograms shadowDepth_;        // hyperbolic depth (the warp's own)
     MaterialPrograms shadowDepthLinear_;  // linear light-space depth written per fragment
     gl::Program blur_;
@@ -120,11 +130,13 @@ private:
     std::vector<std::uint64_t> mapLastUse_{0};
     std::uint64_t mapUseClock_ = 0;
     std::size_t currentMap_ = 0;
+    CascadeMaps cascadeMaps_;
     ShadowTermTargets termTargets_;
     VisibleDepthPrePass visibleDepth_;  // PSM auto near / LiSPSM auto z_f
     MsaaTarget msaa_;  // the forward pass's multisampled target (display.msaaSamples > 1)
     ShadowSetup lastSetup_{};
     gl::Program measure_;  // built on first use
+    gl::Program measureCascaded_;  // measure.frag with CASCADES, built on first use
     MeasureTargets measureTargets_;
     struct MeasureRequest {
         MeasureTargets* targets = nullptr;  // set only inside renderMeasured

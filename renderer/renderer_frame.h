@@ -1,6 +1,7 @@
 #pragma once
 // Everything one frame's passes share, built once per Renderer::render. Private to the renderer's
 // own files (renderer.cpp and the pass files beside it).
+#include "math/cascades.h"
 #include "renderer.h"
 
 namespace shadowlab {
@@ -21,6 +22,11 @@ struct Renderer::Frame {
     InstanceList casters;
     InstanceList visible;  // view-frustum culling of the shadow-term and forward passes
     bool shadowMapMirrored = false;  // the warp flips the winding of light-facing triangles
+    // Cascaded shadow maps (settings.csm): `shadow` is then split 0's setup (for overlays and
+    // diagnostics); each split has its setup and its own culled casters.
+    bool cascaded = false;
+    CascadeSetup cascades{};
+    std::vector<InstanceList> cascadeCasters{};
 };
 
 }  // namespace shadowlab

@@ -25,11 +25,13 @@ FrameStats Renderer::renderMeasured(const Scene& scene, const Settings& settings
 
 void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     const auto cpuStart = std::chrono::steady_clock::now();
-    if (!measure_) {
+    gl::Program& measureProgram = frame.cascaded ? measureCascaded_ : measure_;
+    if (!measureProgram) {
         std::string error;
-        auto program = gl::Program::build("forward.vert", "measure.frag", "", error);
+        auto program =
+            gl::Program::build("forward.vert", "measure.frag", frame.cascaded ? "#define CASCADES 1\n" : "", error);
         if (!program) throw std::runtime_error(error);
-        measure_ = std::move(*program);
+        measureProgram = std::move(*program);
     }
     MeasureTargets& targets = *measureRequest_.targets;
     const int w = frame.viewport.width, h = frame.viewport.height;
@@ -43,7 +45,7 @@ void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 
-    const gl::Program& program = measure_;
+    const gl::Program& program = measureProgram;
     program.use();
     Frame local = frame;
     local.viewport = Viewport{targets.framebuffer(), 0, 0, w, h};
@@ -82,7 +84,7 @@ void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     out.fovYRad = frame.view.fovY;
     out.zNear = frame.view.zNear;
     out.zFar = frame.view.zFar;
-    out.shadowMapSize = frame.shadowed ? shadowMap().size() : 0;
+    out.shadowMapSize = frame.cascaded ? cascadeMaps_.size() : frame.shadowed ? shadowMap().size() : 0;
     stats.passes.push_back(
         {"measure (+ read-back)", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count(),
          0.0});

@@ -17,6 +17,18 @@ bool ShadowMapKey::operator==(const ShadowMapKey& o) const {
            backFaces == o.backFaces && casters == o.casters;
 }
 
+gl::SamplerObject createCompareSampler(bool linear, bool reversed) {
+    gl::SamplerObject s = gl::createSampler();
+    const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, reversed ? GL_GEQUAL : GL_LEQUAL);
+    return s;
+}
+
 void ShadowMap::ensure(int size) {
     if (size == size_) return;
     hasContent_ = false;
@@ -30,16 +42,7 @@ void ShadowMap::ensure(int size) {
         throw std::runtime_error("shadow map framebuffer " + std::to_string(size) + "^2 is incomplete");
     for (int linear = 0; linear < 2; ++linear)
         for (int reversed = 0; reversed < 2; ++reversed) {
-            if (samplers_[linear][reversed]) continue;
-            gl::SamplerObject s = gl::createSampler();
-            const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
-            glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
-            glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
-            glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-            glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-            glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-            glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, reversed ? GL_GEQUAL : GL_LEQUAL);
-            samplers_[linear][reversed] = std::move(s);
+            if (!samplers_[linear][reversed]) samplers_[linear][reversed] = createCompareSampler(linear, reversed);
         }
     size_ = size;
 }

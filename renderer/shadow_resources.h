@@ -31,6 +31,10 @@ struct ShadowMapKey {
     bool operator==(const ShadowMapKey& o) const;
 };
 
+// A depth-compare sampler, clamped to the edge: nearest or linear (hardware 2x2 PCF), the compare
+// passing where reference <= stored (>= when `reversed`).
+gl::SamplerObject createCompareSampler(bool linear, bool reversed);
+
 // A square 32-bit float depth texture and its framebuffer, with two sampler objects for the lookup:
 // compare + nearest and compare + linear (hardware 2x2 PCF). The compare direction follows the
 // depth test of the pass that wrote it.

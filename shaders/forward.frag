@@ -42,10 +42,14 @@ void main() {
         outColor = aliasingErrorOutput(vWorldPosition, uOutputMode == 4);
         return;
     }
+    vec3 tint = vec3(1.0);
+#ifdef CASCADES
+    if (uCascadeColors) tint = cascadeColor(cascadeIndex(vWorldPosition));  // split-colour view
+#endif
     if (uOutputMode == 1) {
-        outColor = vec4(vec3(0.9) * (0.2 + 0.8 * shadow), 1.0);
+        outColor = vec4(tint * vec3(0.9) * (0.2 + 0.8 * shadow), 1.0);
         return;
     }
-    vec3 lit = shade(albedo.rgb, vWorldPosition, n, facetFacing(vWorldPosition), shadow) + materialEmissive();
+    vec3 lit = tint * shade(albedo.rgb, vWorldPosition, n, facetFacing(vWorldPosition), shadow) + materialEmissive();
     outColor = vec4(toneMap(lit), albedo.a);
 }

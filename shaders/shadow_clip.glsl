@@ -5,4 +5,11 @@
 uniform mat4 uWorldToShadowClip;
 uniform vec3 uShadowOrigin;
 
+#ifdef CASCADES
+#include "cascade.glsl"
+// The lookup's map is the split's (the shadow pass itself renders one split at a time without
+// CASCADES, through uWorldToShadowClip).
+vec4 worldToShadowClip(vec3 p) { return cascadeClip(p, cascadeIndex(p)); }
+#else
 vec4 worldToShadowClip(vec3 p) { return uWorldToShadowClip * vec4(p - uShadowOrigin, 1.0); }
+#endif

@@ -2,6 +2,7 @@
 // panel and the captions over the 3D image. ImGui only.
 #include "ab_panel.h"
 #include "accuracy_panel.h"
+#include "cascade_panel.h"
 #include "display_panel.h"
 #include "file_panel.h"
 #include "panels.h"
@@ -77,6 +78,8 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
     if (ImGui::CollapsingHeader("LiSPSM", s.method == ShadowMethod::Lispsm ? ImGuiTreeNodeFlags_DefaultOpen : 0))
         result.changed |= drawLispsmPanel(s, (ctx.lispsmStats ? *ctx.lispsmStats : stats).shadow,
                                           ctx.lispsmStats ? ctx.lispsmStats->virtualFarUsed : ctx.autoVirtualFar);
+    if (ImGui::CollapsingHeader("Cascades", s.csm.enabled ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+        result.changed |= drawCascadePanel(s);
     if (ImGui::CollapsingHeader("PSM")) result.changed |= drawPsmPanel(s, (ctx.psmStats ? *ctx.psmStats : stats).shadow);
     if (ImGui::CollapsingHeader("Bias")) result.changed |= drawBiasPanel(s);
     if (ImGui::CollapsingHeader("Filter & blur")) result.changed |= drawFilterPanel(s);

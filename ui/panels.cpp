@@ -1,5 +1,6 @@
 #include "panels.h"
 
+#include "cascade_panel.h"
 #include "frame_setup.h"
 #include "widgets.h"
 
@@ -108,9 +109,11 @@ void fallbackLine(const ShadowDiagnostics& d) {
 
 bool drawMethodPanel(Settings& s, const FrameStats& stats) {
     bool changed = false;
-    changed |= methodCombo("method", s.method,
+    changed |= drawMethodOrCascadeCombo(s, [](ShadowMethod& method) {
+        return methodCombo("method", method,
                            "The shadow map parameterization. Compare them side by side in 'Split compare'. "
                            "Hover an entry for its paper section.");
+    });
     changed |= checkbox("shadows", s.shadows, "Render and look up the shadow map at all (thesis 2.3.1).");
     static const int kSizes[] = {256, 512, 1024, 2048, 4096, 8192};
     static const char* const kSizeNames[] = {"256", "512", "1024", "2048", "4096", "8192"};
@@ -232,6 +235,10 @@ bool drawBiasPanel(Settings& s) {
                               "glPolygonOffset units: the minimal resolvable offsets added (thesis eq. 5.2; the "
                               "thesis uses 4.0).");
     }
+    changed |= dragDouble("normal offset", b.normalOffset, 0.05f, 0.0, 16.0, "%.2f texels",
+                          "Normal-offset bias: look up the map at the point moved along its normal by this many "
+                          "texels (world size at the point) times sin(angle to the light); combines with the modes "
+                          "above. 0 = off.");
     changed |= checkbox("back faces", b.backFaces,
                         "Render only the back faces into the shadow map (front faces culled): removes acne on "
                         "closed objects, may unshadow their back sides (thesis 5.1 Fig. 5.5, 9.3).");

@@ -41,6 +41,9 @@ NLOHMANN_JSON_SERIALIZE_ENUM(LightSource, {{LightSource::Scene, "scene"},
                                            {LightSource::Sun, "sun"},
                                            {LightSource::Spot, "spot"}})
 
+NLOHMANN_JSON_SERIALIZE_ENUM(SplitParameterization, {{SplitParameterization::Ssm, "ssm"},
+                                                     {SplitParameterization::StableSsm, "stable"},
+                                                     {SplitParameterization::Lispsm, "lispsm"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(ToneMapping, {{ToneMapping::None, "none"},
                                            {ToneMapping::PbrNeutral, "pbr-neutral"},
                                            {ToneMapping::Aces, "aces"}})
@@ -50,7 +53,10 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg
                                    sunDegreesPerSecond)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear, guard)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces,
+                                   normalOffset)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CascadeSettings, enabled, splits, lambda, perSplit, blendBand, manualSplits,
+                                   colorSplits)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, edgeAwareBlur,
                                    blurStrength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DisplaySettings, exposureEv, toneMapping, hemisphereAmbient, msaaSamples)
@@ -61,7 +67,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
                                    groupedDraws, shaderVariants)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
-                                   filter, overlays, compare, animation, skip, display)
+                                   csm, filter, overlays, compare, animation, skip, display)
 
 namespace {
 

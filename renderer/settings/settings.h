@@ -2,6 +2,7 @@
 // The one contract between UI, renderer, CLI (--set key=value, --view VIEW.json), benchmarks and
 // tests: every parameter the viewer exposes lives here, with defaults, equality and JSON.
 // GL-free and ImGui-free.
+#include "math/cascades.h"
 #include "math/shadow_setup.h"
 
 #include <glm/glm.hpp>
@@ -76,7 +77,25 @@ struct BiasSettings {
     double slopeFactor = 2.0;      // glPolygonOffset factor (paper defaults 2.0 / 4.0)
     double slopeUnits = 4.0;       // glPolygonOffset units
     bool backFaces = false;        // render back faces into the shadow map (front faces culled)
+    // Normal-offset bias: the lookup moves along the receiver's normal by this many texels (the
+    // map's world texel size at the point) times sin(angle between normal and light), so grazing
+    // receivers move most; combinable with every mode above. 0 = off.
+    double normalOffset = 0.0;
     bool operator==(const BiasSettings&) const = default;
+};
+
+// Cascaded (parallel-split) shadow maps, Zhang et al. 2006 (math/cascades.h). `enabled` is what
+// `--method csm` sets; `method` is then unused. Each split is one layer of shadowMapSize^2, so
+// 4 splits of 1024^2 use the memory of one 2048^2 map.
+struct CascadeSettings {
+    bool enabled = false;
+    int splits = 4;                    // 1..4
+    double lambda = 0.5;               // practical scheme: 0 uniform, 1 logarithmic
+    SplitParameterization perSplit = SplitParameterization::Ssm;
+    double blendBand = 0.0;            // fraction of a split's depth range (at its far end) blended into the next
+    std::vector<double> manualSplits;  // empty: practical scheme; else splits - 1 fractions of [near, far]
+    bool colorSplits = false;          // tint each split's pixels (red, green, blue, yellow)
+    bool operator==(const CascadeSettings&) const = default;
 };
 
 struct FilterSettings {
@@ -150,6 +169,7 @@ struct Settings {
     LispsmSettings lispsm;
     PsmSettings psm;
     BiasSettings bias;
+    CascadeSettings csm;
     FilterSettings filter;
     OverlaySettings overlays;
     CompareSettings compare;

@@ -56,6 +56,10 @@ const NumberSetting kNumbers[] = {
     REAL("bias.constant", bias.constant, -1.0, 1.0),
     REAL("bias.slopeFactor", bias.slopeFactor, -64.0, 64.0),
     REAL("bias.slopeUnits", bias.slopeUnits, -1e5, 1e5),
+    REAL("bias.normalOffset", bias.normalOffset, 0.0, 16.0),  // texels; more moves shadows off their casters
+    INTEGER("csm.splits", csm.splits, 1, kMaxCascadeSplits),
+    REAL("csm.lambda", csm.lambda, 0.0, 1.0),
+    REAL("csm.blendBand", csm.blendBand, 0.0, 0.5),  // half a split blended is already all transition
     INTEGER("filter.blurIterations", filter.blurIterations, 0, 16),
     REAL("filter.blurStrength", filter.blurStrength, 0.0, 16.0),
     INTEGER("compare.count", compare.count, 1, 3),
@@ -82,6 +86,7 @@ const Choices kChoices[] = {
     {"light.source", "scene, sun, spot"},
     {"bias.distribution", "hyperbolic, linear"},
     {"bias.mode", "none, constant, slope"},
+    {"csm.perSplit", "ssm, stable, lispsm"},
     {"filter.filter", "nearest, pcf2x2, pcf3x3, pcf4x4"},
     {"compare.methods", "ssm, ssm-unfocused, psm, lispsm"},
     {"display.toneMapping", "none, pbr-neutral, aces"},
@@ -158,6 +163,15 @@ std::vector<std::string> sanitize(Settings& s) {
         changes.push_back("camera.farPlane: " + number(c.farPlane) + " -> " + number(far) + " (must exceed nearPlane)");
         c.farPlane = far;
     }
+    {
+        CascadeParams cascade;
+        cascade.splits = s.csm.splits;
+        cascade.manualSplits = s.csm.manualSplits;
+        if (std::string why = validateCascadeParams(cascade); !why.empty()) {
+            changes.push_back("csm.manualSplits: cleared (" + why + "): the practical scheme is used");
+            s.csm.manualSplits.clear();
+        }
+    }
     if (s.compare.methods.size() < 3) {
         changes.push_back("compare.methods: filled up to three entries");
         for (std::size_t i = s.compare.methods.size(); i < 3; ++i) s.compare.methods.push_back(defaults.compare.methods[i]);
@@ -216,6 +230,10 @@ std::vector<SettingDescription> describeSettings() {
             std::string names;
             for (const json& m : *value) names.append(names.empty() ? "" : ",").append(m.get<std::string>());
             d.defaultValue = names;
+        } else if (key == "csm.manualSplits") {
+            d.type = "list";
+            d.range = "csm.splits - 1 increasing fractions of [near, far] in (0, 1); empty: the practical scheme";
+            d.defaultValue = "";
         } else {
             d.type = "x,y,z";
             std::string xyz;

@@ -176,19 +176,87 @@ INSTANTIATE_TEST_SUITE_P(Methods, SpotShadowRender,
                              return std::string(methodName(info.param));
                          });
 
+// Cascaded shadow maps (settings.csm): 4 splits of 1024^2 each, the split picked per pixel by eye
+// depth; every per-split parameterization must put the box's shadow where the ray cast does.
+struct CascadeCase {
+    SplitParameterization perSplit;
+    const char* lightName;
+    glm::dvec3 (*light)();
+};
+class CascadeShadowRender : public RenderTest, public ::testing::WithParamInterface<CascadeCase> {};
+
+TEST_P(CascadeShadowRender, GeometricShadowIsDarkAndOpenGroundIsLit) {
+    const CascadeCase c = GetParam();
+    const glm::dvec3 light = c.light();
+    const Scene scene = planeBoxScene(light);
+    Settings s = shadowView(ShadowMethod::SsmFocused);
+    s.csm.enabled = true;
+    s.csm.splits = 4;
+    s.csm.lambda = 0.5;
+    s.csm.perSplit = c.perSplit;
+    FrameStats stats;
+    const Classification k = classify(render(scene, s, &stats), s, light, 0.25);
+    ASSERT_GT(k.shadow, 60) << "the box's shadow must be in view";
+    ASSERT_GT(k.lit, 1000);
+    EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << c.lightName << ": shadowed ground rendered lit";
+    EXPECT_LT(k.litButDark, k.lit * 2 / 100) << c.lightName << ": lit ground rendered dark";
+    EXPECT_GT(stats.castersDrawn, 0u);
+    EXPECT_EQ(stats.shadowMapSize, 1024);
+    bool cascadePass = false;
+    for (const PassStats& p : stats.passes) cascadePass |= p.name == "shadow maps (4 splits)";
+    EXPECT_TRUE(cascadePass) << "one shadow pass per split";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    PerSplitAndLights, CascadeShadowRender,
+    ::testing::Values(CascadeCase{SplitParameterization::Ssm, "side", fromSide},
+                      CascadeCase{SplitParameterization::StableSsm, "side", fromSide},
+                      CascadeCase{SplitParameterization::StableSsm, "behind", fromBehind},
+                      CascadeCase{SplitParameterization::Lispsm, "front", fromFront},
+                      CascadeCase{SplitParameterization::Lispsm, "behind", fromBehind}),
+    [](const ::testing::TestParamInfo<CascadeCase>& info) {
+        return std::string(splitParameterizationName(info.param.perSplit)) + "_" + info.param.lightName;
+    });
+
+// A shadow that crosses split boundaries (blend band, PCF across layers, linear depth with its
+// per-split range, per-split constant offset) stays where the ray cast says.
+TEST_F(CascadeShadowRender, BlendBandPcfAndLinearDepthKeepTheShadowInPlace) {
+    const Scene scene = planeBoxScene(fromSide());
+    Settings s = shadowView(ShadowMethod::SsmFocused);
+    s.csm.enabled = true;
+    s.csm.splits = 3;
+    s.csm.manualSplits = {0.12, 0.2};  // split boundaries across the box's shadow
+    s.csm.blendBand = 0.3;
+    s.filter.filter = ShadowFilter::Pcf3x3;
+    for (DepthDistribution dist : {DepthDistribution::Hyperbolic, DepthDistribution::Linear})
+        for (DepthOffset mode : {DepthOffset::Constant, DepthOffset::SlopeScale}) {
+            s.bias.distribution = dist;
+            s.bias.mode = mode;
+            const Classification k = classify(render(scene, s), s, fromSide(), 0.3);
+            ASSERT_GT(k.shadow, 60);
+            EXPECT_LT(k.shadowButLit, k.shadow * 3 / 100) << int(dist) << " " << int(mode);
+            EXPECT_LT(k.litButDark, k.lit * 3 / 100) << int(dist) << " " << int(mode);
+        }
+}
+
 // Acne (thesis 3.3, ch. 5): with no offset a grazing light on the ground shadows part of the lit
 // ground; slope-scale offset (2.0 / 4.0) and back-face rendering each remove it.
 class Acne : public RenderTest {
 protected:
-    double acneFraction(DepthOffset mode, bool backFaces, DepthDistribution distribution) {
+    double acneFraction(DepthOffset mode, bool backFaces, DepthDistribution distribution, double normalOffset = 0.0,
+                        bool cascades = false) {
         const glm::dvec3 light = glm::normalize(glm::dvec3(1.0, -0.35, 0.3));  // low sun: strong depth slope
         const Scene scene = planeBoxScene(light);
         Settings s = shadowView(ShadowMethod::SsmFocused);
         s.bias.mode = mode;
         s.bias.backFaces = backFaces;
         s.bias.distribution = distribution;
+        s.bias.normalOffset = normalOffset;
+        s.csm.enabled = cascades;
         const Classification k = classify(render(scene, s), s, light, 0.25);
         EXPECT_GT(k.lit, 1000);
+        // The offset must not move the shadow off its caster (false light).
+        if (normalOffset > 0.0) EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << "normal offset " << normalOffset;
         return double(k.litButDark) / std::max(1, k.lit);
     }
 };
@@ -204,6 +272,20 @@ TEST_F(Acne, NoBiasShowsFalseShadowSlopeScaleAndBackFacesRemoveIt) {
     EXPECT_GT(none, 0.05) << "without any bias a grazing light must show acne";
     EXPECT_LT(slope, 0.005);
     EXPECT_LT(back, 0.005);
+}
+
+// Normal-offset bias alone (no depth offset): moving the lookup a texel or two along the normal,
+// scaled by sin(angle to the light), removes the acne of a grazing light, with one map and with
+// cascades (where the texel size differs per split).
+TEST_F(Acne, NormalOffsetAloneRemovesAcne) {
+    for (bool cascades : {false, true}) {
+        const double none = acneFraction(DepthOffset::None, false, DepthDistribution::Hyperbolic, 0.0, cascades);
+        const double offset = acneFraction(DepthOffset::None, false, DepthDistribution::Hyperbolic, 2.0, cascades);
+        std::printf("acne fraction of lit ground (%s): none %.4f, normal offset 2 texels %.4f\n",
+                    cascades ? "csm" : "one map", none, offset);
+        EXPECT_GT(none, 0.05) << "without any bias a grazing light must show acne";
+        EXPECT_LT(offset, 0.005);
+    }
 }
 
 TEST_F(Acne, EveryBiasCombinationRendersWithoutGlErrors) {

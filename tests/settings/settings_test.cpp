@@ -162,5 +162,41 @@ TEST(FrameSetup, FrustumCullingKeepsVisibleAndStraddlingBoxesOnly) {
     EXPECT_FALSE(boxMayBeVisible(planes, Aabb{}));                  // empty
 }
 
+TEST(Settings, CascadeBlockRoundTripsAndSetsByKey) {
+    Settings s;
+    std::string error;
+    ASSERT_TRUE(setByKey(s, "csm.enabled=true", error)) << error;
+    ASSERT_TRUE(setByKey(s, "csm.perSplit=stable", error)) << error;
+    ASSERT_TRUE(setByKey(s, "csm.splits=3", error)) << error;
+    ASSERT_TRUE(setByKey(s, "csm.manualSplits=0.1,0.35", error)) << error;
+    ASSERT_TRUE(setByKey(s, "bias.normalOffset=1.5", error)) << error;
+    EXPECT_TRUE(s.csm.enabled);
+    EXPECT_EQ(s.csm.perSplit, SplitParameterization::StableSsm);
+    EXPECT_EQ(s.csm.manualSplits, (std::vector<double>{0.1, 0.35}));
+    EXPECT_EQ(s.bias.normalOffset, 1.5);
+    Settings back;
+    ASSERT_TRUE(fromJsonText(toJsonText(s), back, error)) << error;
+    EXPECT_EQ(back, s);
+    EXPECT_FALSE(setByKey(s, "csm.perSplit=psm", error));
+    EXPECT_NE(error.find("csm.perSplit"), std::string::npos) << error;
+    bool listed = false;
+    for (const auto& k : settingKeys(s)) listed |= k.rfind("csm.lambda=", 0) == 0;
+    EXPECT_TRUE(listed);
+}
+
+TEST(Settings, SanitizeClampsCascadesAndDropsBadManualSplits) {
+    Settings s;
+    s.csm.splits = 9;
+    s.csm.lambda = -2.0;
+    s.csm.blendBand = std::nan("");
+    s.csm.manualSplits = {0.5, 0.2, 0.9};  // 4 splits need 3 increasing values: these decrease
+    const auto changes = sanitize(s);
+    EXPECT_EQ(s.csm.splits, kMaxCascadeSplits);
+    EXPECT_EQ(s.csm.lambda, 0.0);
+    EXPECT_EQ(s.csm.blendBand, 0.0);
+    EXPECT_TRUE(s.csm.manualSplits.empty());
+    EXPECT_GE(changes.size(), 4u);
+}
+
 }  // namespace
 }  // namespace shadowlab

@@ -1,0 +1,138 @@
+// Cascaded shadow maps in the frame (math/cascades.h for the math): the per-split setups and
+// caster culling, one shadow pass per split into its layer of the depth array, and the uniforms
+// of the lookup (shaders/cascade.glsl, compiled in by #define CASCADES).
+#include "renderer.h"
+#include "renderer_frame.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <string>
+
+namespace shadowlab {
+
+namespace {
+
+// A split that sees nothing lit (B_i empty) maps every point to depth 0 at the map's centre: its
+// cleared layer (depth 1) then reads lit, as the single map does for an invalid setup.
+glm::dmat4 allLitMatrix() {
+    glm::dmat4 m(0.0);
+    m[3][2] = -1.0;
+    m[3][3] = 1.0;
+    return m;
+}
+
+glm::dmat4 splitMatrix(const CascadeSplit& split) {
+    return split.setup.valid ? split.setup.worldToShadowClip : allLitMatrix();
+}
+
+const CascadeSplit* firstValidSplit(const CascadeSetup& cascades) {
+    for (const CascadeSplit& split : cascades.splits)
+        if (split.setup.valid) return &split;
+    return nullptr;
+}
+
+}  // namespace
+
+MaterialPrograms& Renderer::forwardFor(const Frame& frame) { return frame.cascaded ? forwardCascaded_ : forward_; }
+
+void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
+    const Settings& s = frame.settings;
+    CascadeParams params;
+    params.splits = s.csm.splits;
+    params.lambda = s.csm.lambda;
+    params.manualSplits = s.csm.manualSplits;
+    params.perSplit = s.csm.perSplit;
+    params.mapResolution = s.shadowMapSize;
+    params.base = shadowParams(s, frame.view, frame.scene.bounds);
+    // LiSPSM per split: n from the split's own near and far (thesis 9.2.5 applied per split), not
+    // from a virtual far plane of the whole view.
+    params.base.lispsm.virtualFar = 0.0;
+    params.base.lispsm.pseudoNear = 0.0;
+    frame.cascades = computeCascadeSetup(frame.view, shadowLight(frame.light), frame.scene.bounds, params);
+    const CascadeSplit* first = firstValidSplit(frame.cascades);
+    if (!frame.cascades.error.empty() || !first) {
+        stats.shadow.fallback = frame.cascades.error;
+        return;
+    }
+    frame.cascaded = true;
+    frame.shadowed = true;
+    frame.shadow = first->setup;  // overlays and read-outs show the first split that sees something
+    stats.shadow = frame.shadow.diagnostics;
+    lastSetup_ = frame.shadow;
+    frame.linearDepth = s.bias.distribution == DepthDistribution::Linear;
+    frame.reversedDepth = false;  // SSM, stable SSM and LiSPSM never reverse the test (only PSM does)
+    frame.linear = first->setup.linearDepth;
+
+    // Each split culls its casters against its own B_i.
+    const auto start = std::chrono::steady_clock::now();
+    frame.cascadeCasters.assign(frame.cascades.splits.size(), {});
+    stats.castersDrawn = 0;
+    for (std::size_t i = 0; i < frame.cascades.splits.size(); ++i) {
+        const CascadeSplit& split = frame.cascades.splits[i];
+        if (!split.setup.valid) continue;
+        culler_.casters(frame.scene, split.setup, s.skip.hierarchicalCulling, frame.cascadeCasters[i]);
+        stats.castersDrawn += frame.cascadeCasters[i].size();
+    }
+    stats.castersCulled = frame.scene.instances.size() * frame.cascades.splits.size() - stats.castersDrawn;
+    stats.cullingCpuMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Renderer::cascadeShadowPass(const Frame& frame, FrameStats& stats) {
+    const auto cpuStart = std::chrono::steady_clock::now();
+    shadowTimer_.begin();
+    const int layers = int(frame.cascades.splits.size());
+    const int size = frame.settings.shadowMapSize;
+    cascadeMaps_.ensure(size, layers);
+    stats.shadowMapSize = size;
+    for (int i = 0; i < layers; ++i) {
+        const CascadeSplit& split = frame.cascades.splits[std::size_t(i)];
+        Frame layer = frame;
+        layer.worldToShadowClip = splitMatrix(split);
+        layer.linear = split.setup.linearDepth;
+        layer.casters = split.setup.valid ? frame.cascadeCasters[std::size_t(i)] : InstanceList{};
+        layer.shadowMapMirrored =
+            split.setup.valid && !lightFacingIsCounterClockwise(layer.worldToShadowClip, frame.light, split.setup.bodyBounds);
+        drawShadowDepth(layer, cascadeMaps_.framebuffer(i), size, stats.shadowPass);
+    }
+    shadowTimer_.end();
+    const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
+    stats.passes.push_back({"shadow maps (" + std::to_string(layers) + " splits)", cpuMs, shadowTimer_.lastMs()});
+    timedPasses_.push_back({stats.passes.size() - 1, &shadowTimer_});
+}
+
+void Renderer::setCascadeUniforms(const gl::Program& program, const Frame& frame) const {
+    const Settings& s = frame.settings;
+    const CascadeSetup& cascades = frame.cascades;
+    const glm::dmat4 toOrigin = glm::translate(glm::dmat4(1.0), glm::dvec3(glm::vec3(frame.view.eye)));  // as setShadowClip
+    program.set("uCascadeCount", int(cascades.splits.size()));
+    program.set("uCascadeForward", glm::vec3(glm::normalize(frame.view.forward)));
+    program.set("uCascadeBlend", float(s.csm.blendBand));
+    program.set("uCascadeColors", s.csm.colorSplits ? 1 : 0);
+    // Bias per split: a constant offset means the same world distance per texel in every split, so
+    // it grows with the split's texel size and is converted to the split's depth units (its B_i
+    // depth range), relative to the first split that sees something.
+    const CascadeSplit& reference = *firstValidSplit(cascades);
+    const double referenceRange = reference.setup.linearDepth.farDepth - reference.setup.linearDepth.nearDepth;
+    const double constant = s.bias.mode == DepthOffset::Constant ? s.bias.constant : 0.0;
+    for (std::size_t i = 0; i < cascades.splits.size(); ++i) {
+        const CascadeSplit& split = cascades.splits[i];
+        const std::string index = "[" + std::to_string(i) + "]";
+        program.set("uCascadeClip" + index, glm::mat4(splitMatrix(split) * toOrigin));
+        program.set("uCascadeNear" + index, float(split.zNear));
+        program.set("uCascadeFar" + index, float(split.zFar));
+        const LinearShadowDepth& linear = split.setup.linearDepth;
+        program.set("uCascadeLinearRange" + index, glm::vec2(linear.nearDepth, linear.farDepth));
+        const double range = linear.farDepth - linear.nearDepth;
+        const double scale = split.setup.valid && range > 0.0 && reference.texelWorldSize > 0.0
+                                 ? (referenceRange / range) * (split.texelWorldSize / reference.texelWorldSize)
+                                 : 1.0;
+        program.set("uCascadeOffset" + index, float(constant * scale));
+    }
+    program.set("uLinearRange", glm::vec2(0.0f, 1.0f));  // raw distance: the split's range applies per fragment
+    program.set("uShadowTexel", glm::vec2(1.0f / float(cascadeMaps_.size())));
+    glBindTextureUnit(1, cascadeMaps_.texture());
+    glBindSampler(1, cascadeMaps_.sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware));
+}
+
+}  // namespace shadowlab
