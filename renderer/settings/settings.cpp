@@ -103,6 +103,7 @@ std::string expected(const std::string& key, const json& slot) {
     if (slot.is_number()) return "a number" + range();
     if (slot.is_string()) return "one of " + settingChoices(key);
     if (key == "compare.methods") return "a list of up to 3 of " + settingChoices(key);
+    if (key == "csm.manualSplits") return "a list of up to " + std::to_string(kMaxCascadeSplits - 1) + " finite numbers";
     return "3 finite numbers [x, y, z]";
 }
 
@@ -141,6 +142,11 @@ bool checkLeaf(const json& slot, const json& value, const std::string& key, json
                 error = "setting '" + key + "' expects " + expected(key, slot) + ", got the entry " + shown(item);
                 return false;
             }
+        out = value;
+    } else if (key == "csm.manualSplits") {  // order and count are checked by sanitize()
+        if (!value.is_array() || value.size() > std::size_t(kMaxCascadeSplits - 1)) return refuse();
+        for (const json& v : value)
+            if (!v.is_number() || !std::isfinite(v.get<double>())) return refuse();
         out = value;
     } else {  // x, y, z
         if (!value.is_array() || value.size() != 3) return refuse();

@@ -231,9 +231,9 @@ std::vector<SettingDescription> describeSettings() {
             for (const json& m : *value) names.append(names.empty() ? "" : ",").append(m.get<std::string>());
             d.defaultValue = names;
         } else if (key == "csm.manualSplits") {
-            d.type = "list";
+            d.type = "numbers";
             d.range = "csm.splits - 1 increasing fractions of [near, far] in (0, 1); empty: the practical scheme";
-            d.defaultValue = "";
+            d.defaultValue = "[] (empty)";
         } else {
             d.type = "x,y,z";
             std::string xyz;
