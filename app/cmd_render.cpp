@@ -9,6 +9,7 @@
 #include "bench_spec.h"
 #include "renderer.h"
 #include "scenes/animation.h"
+#include "ground_plane.h"
 #include "render_compare.h"
 #include "view_setup.h"
 
@@ -132,6 +133,7 @@ void runRender(const RenderOptions& options) {
     if (!renderer) fail(error);
     // The view's time poses glTF animations exactly as the viewer showed them.
     animateScene(*scene, settings.animation.time);
+    if (settings.display.groundPlane) addGroundPlane(*scene);
     renderer->setScene(*scene);
     std::unique_ptr<RayScene> rays;
     if (options.truth) {

@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "file_panel.h"
 #include "gl/debug_output.h"
+#include "ground_plane.h"
 #include "png_text.h"
 #include "render_target.h"
 #include "scene_loading.h"
@@ -113,6 +114,7 @@ struct ViewerState {
     std::unique_ptr<SceneLoadJob> load;
     ui::AbCompare ab;  // A/B compare of two settings (ui/ab_panel.h)
     std::string abView;  // --ab, applied when the first scene arrives
+    std::optional<GroundPlaneUndo> groundPlane;  // added to the scene (display.groundPlane)
     ViewerAccuracy accuracy;  // the accuracy panel (app/viewer_accuracy.h)
     bool initialLoad = true;  // the scene of the command line (its settings take the overrides)
     bool uploadNext = false;  // a finished load is uploaded next frame, after its "uploading" frame
@@ -177,6 +179,7 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
         return;
     }
     state.scene = std::move(loaded.scene);
+    state.groundPlane.reset();  // the new scene has none yet; syncGroundPlane adds it if asked
     Scene& scene = *state.scene;
     if (initial) {
         state.settings = initialSettings(scene);
@@ -348,6 +351,19 @@ void updateTitle(GLFWwindow* window, const ViewerState& state, std::string& wind
 
 bool animating(const ViewerState& state);
 
+// Adds or removes the ground plane when display.groundPlane changed (and re-uploads the scene).
+void syncGroundPlane(ViewerState& state, Renderer& renderer) {
+    if (!state.scene || state.settings.display.groundPlane == state.groundPlane.has_value()) return;
+    if (state.groundPlane) {
+        removeGroundPlane(*state.scene, *state.groundPlane);
+        state.groundPlane.reset();
+    } else {
+        state.groundPlane = addGroundPlane(*state.scene);
+    }
+    renderer.setScene(*state.scene);
+    state.status.sceneTriangles = state.scene->triangleCount();
+}
+
 // Advances the scene clock (glTF animations, the animated sun) and poses the scene. A clock that
 // moves nothing stands still, so an idle window stays idle.
 void advanceClock(ViewerState& state, Renderer& renderer, double dt) {
@@ -469,6 +485,7 @@ void runViewer(const ViewerOptions& options) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, std::max(1, fbWidth), std::max(1, fbHeight));
         if (state.scene && fbWidth > 0 && fbHeight > 0) {
+            syncGroundPlane(state, *renderer);
             advanceClock(state, *renderer, dt);
             if (abComposites(state.ab)) {
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);

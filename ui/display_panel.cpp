@@ -38,6 +38,10 @@ bool drawDisplayPanel(Settings& s) {
     changed |= valueCombo("anti-aliasing", d.msaaSamples, kSamples, kSampleNames);
     tip("Multisample anti-aliasing of the lit view (silhouettes, not shadow edges: those are the shadow map's "
         "sampling, thesis ch. 3). Costs fill rate, much of it on a software rasteriser.");
+    changed |= checkbox("ground plane", d.groundPlane,
+                        "A grey plane just below the scene's lowest point, three times its size, that receives "
+                        "shadows: sample models otherwise float with nothing to cast onto. It enlarges the scene "
+                        "bounds S, hence B (thesis 4.2).");
     return changed;
 }
 

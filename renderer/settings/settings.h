@@ -148,7 +148,7 @@ struct SkipSettings {
 };
 
 // Display of the lit view: exposure and tone mapping in linear space before the sRGB encode, the
-// ambient's shape, anti-aliasing. The shadow-term and error views skip exposure and
+// ambient's shape, anti-aliasing, a ground plane (renderer/ground_plane.h). The shadow-term and error views skip exposure and
 // tone mapping (their values are measurements); "none" keeps the lit view linear for measuring too.
 enum class ToneMapping { None, PbrNeutral, Aces };
 struct DisplaySettings {
@@ -156,6 +156,7 @@ struct DisplaySettings {
     ToneMapping toneMapping = ToneMapping::PbrNeutral;  // Khronos PBR Neutral; ACES (Narkowicz' fit)
     bool hemisphereAmbient = true;  // sky above, ground below: shadowed regions keep their shape
     int msaaSamples = 1;            // 1 (off), 2, 4 or 8 for the lit view
+    bool groundPlane = false;       // a grey plane under the scene bounds that receives shadows
     bool operator==(const DisplaySettings&) const = default;
 };
 

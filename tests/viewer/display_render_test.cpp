@@ -2,6 +2,7 @@
 // operators on known values, the edge-aware blur not crossing a depth edge, and no shadow-test
 // hatching on facets that face away from the light (thesis 6.2).
 #include "gl/program.h"
+#include "ground_plane.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 
@@ -141,6 +142,36 @@ TEST_F(DisplayRender, MsaaSmoothsSilhouettesAndChangesNothingElse) {
     EXPECT_GT(changed, 40);  // the silhouette edges
     EXPECT_LT(changed, kWidth * kHeight / 20);
     EXPECT_EQ(interiorChanged, 0);
+}
+
+TEST_F(DisplayRender, GroundPlaneReceivesTheShadowOfAFloatingModelAndComesOffAgain) {
+    // A box 1 m up with nothing under it: around it the camera sees sky. With the ground plane
+    // (just below its lowest point) there is lit ground, and the box's shadow on it.
+    Scene scene;
+    scene.materials.push_back({"Box", {0.8f, 0.1f, 0.1f, 1.0f}});
+    scene.meshes.push_back({"Box", {boxPrimitive({-1, 1, -1}, {1, 3, 1}, 0)}});
+    addInstance(scene, 0, glm::dmat4(1.0));
+    Light sun;
+    sun.direction = glm::normalize(glm::dvec3(0.0, -1.0, 0.5));  // the shadow falls in front: z in [1, 2]
+    scene.lights.push_back(sun);
+    const Scene original = scene;
+    Settings s = lookAt({0.0, 6.0, 9.0}, {0.0, 0.5, 0.0});
+    const glm::ivec2 away = project(s, kWidth, kHeight, {2.4, 1.0, 1.8});
+    const RgbaImage floating = render(scene, s);
+    Scene withGround = scene;  // another object: the test renderer re-uploads by identity
+    const GroundPlaneUndo undo = addGroundPlane(withGround);
+    const RgbaImage grounded = render(withGround, s);
+    EXPECT_EQ(withGround.instances.size(), original.instances.size() + 1);
+    EXPECT_LT(withGround.bounds.min.y, 1.0);
+    // Away from the box: sky without the plane, lit grey ground with it.
+    EXPECT_GT(floating.at(away.x, away.y).b, floating.at(away.x, away.y).r + 30);
+    EXPECT_NEAR(int(grounded.at(away.x, away.y).r), int(grounded.at(away.x, away.y).b), 6);
+    const glm::ivec2 shade = project(s, kWidth, kHeight, {0.0, 1.0, 1.5});
+    EXPECT_LT(luminance(grounded.at(shade.x, shade.y)) + 40, luminance(grounded.at(away.x, away.y)));
+    removeGroundPlane(withGround, undo);
+    EXPECT_EQ(withGround.instances.size(), original.instances.size());
+    EXPECT_EQ(withGround.meshes.size(), original.meshes.size());
+    EXPECT_EQ(withGround.bounds, original.bounds);
 }
 
 }  // namespace
