@@ -21,6 +21,7 @@ struct StressCommandOptions {
     long long seed = 1;
     int samples = 8;
     long long sweepSun = 4000, sweepSpot = 2000;
+    bool sweepWithoutReceivers = false;
 };
 
 void runStressCommand(const StressCommandOptions& o) {
@@ -46,6 +47,7 @@ void runStressCommand(const StressCommandOptions& o) {
     sweepOptions.seed = std::uint64_t(o.seed);
     sweepOptions.directionalViews = std::uint64_t(o.sweepSun);
     sweepOptions.spotViews = std::uint64_t(o.sweepSpot);
+    sweepOptions.measuredReceivers = !o.sweepWithoutReceivers;
     const SweepReport sweep = runMethodSweep(sweepOptions);
     std::cout << "\nmethod sweep\n" << sweep.text();
     if (!report.passed() || !sweep.passed()) {
@@ -65,6 +67,8 @@ void addStressCommand(CLI::App& app) {
     cmd->add_option("--sweep-sun", options->sweepSun, "Method sweep: random views lit by a sun")->capture_default_str();
     cmd->add_option("--sweep-spot", options->sweepSpot, "Method sweep: random views lit by a spot light")
         ->capture_default_str();
+    cmd->add_flag("--sweep-without-receivers", options->sweepWithoutReceivers,
+                  "Method sweep: no depth pre-pass receiver points (the warps see only the visible depth range)");
     cmd->callback([options] { runStressCommand(*options); });
 }
 

@@ -77,7 +77,47 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         const double ndcZ = 2.0 * double(d) - 1.0;
         return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
     };
-    return {eyeDistance(nearestDepth), eyeDistance(farthestDepth)};
+    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}};
+    // Receivers: a grid of pixel centres (background skipped), unprojected in double, each with
+    // the normal of the plane through it and its right and upper neighbours (the one facing the
+    // eye); where a neighbour is background or across a depth edge the normal is left to the
+    // search's stand-in (the eye/light bisector).
+    constexpr int kGridX = ShadowParams::kReceiverGridX, kGridY = ShadowParams::kReceiverGridY;
+    const glm::dmat4 clipToWorld = glm::inverse(view.viewProjection);
+    auto worldAt = [&](int x, int y, glm::dvec3& p) {
+        const float d = depth[std::size_t(y) * std::size_t(view.width) + std::size_t(x)];
+        if (!(d < 1.0f)) return false;
+        const glm::dvec4 ndc{2.0 * (x + 0.5) / view.width - 1.0, 2.0 * (y + 0.5) / view.height - 1.0, 2.0 * d - 1.0, 1.0};
+        const glm::dvec4 w = clipToWorld * ndc;
+        if (!(std::abs(w.w) > 0.0)) return false;
+        p = glm::dvec3(w) / w.w;
+        return true;
+    };
+    out.receivers.reserve(kGridX * kGridY);
+    for (int j = 0; j < kGridY; ++j)
+        for (int i = 0; i < kGridX; ++i) {
+            const int x = (2 * i + 1) * view.width / (2 * kGridX), y = (2 * j + 1) * view.height / (2 * kGridY);
+            SurfacePoint s;
+            if (!worldAt(x, y, s.point)) continue;
+            glm::dvec3 right, up;
+            const int xr = std::min(x + 1, view.width - 1) == x ? x - 1 : x + 1;
+            const int yu = std::min(y + 1, view.height - 1) == y ? y - 1 : y + 1;
+            const glm::dvec3 toEye = view.view.eye - s.point;
+            s.normal = glm::dvec3(0.0);
+            if (worldAt(xr, y, right) && worldAt(x, yu, up)) {
+                const glm::dvec3 a = right - s.point, b = up - s.point, n = glm::cross(a, b);
+                const double len = glm::length(n);
+                // Across a depth edge the neighbours lie far apart: more than 10x the pixel's width.
+                const double spread = std::max(glm::length(a), glm::length(b));
+                if (len > 0.0 && spread < 10.0 * std::min(glm::length(a), glm::length(b)) + 1e-12)
+                    s.normal = glm::dot(n, toEye) >= 0.0 ? n / len : -n / len;
+            }
+            if (glm::length(s.normal) == 0.0) {  // no reliable normal: face the eye
+                s.normal = glm::normalize(toEye);
+            }
+            out.receivers.push_back(s);
+        }
+    return out;
 }
 
 void VisibleDepthPrePass::finish(Slot& slot) {

@@ -28,6 +28,9 @@ namespace shadowlab {
 // visible; callers then keep their conservative defaults).
 struct VisibleDepthRange {
     double nearest = -1.0, farthest = -1.0;
+    // The visible surfaces at a coarse grid of pre-pass pixels, with normals from the depth: the
+    // receivers LiSPSM's warp search and PSM's guard measure the footprint at (math/lispsm_search.h).
+    std::vector<SurfacePoint> receivers;
 };
 
 // What a measurement is valid for.

@@ -168,8 +168,9 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
         k = params.n > 0.0 && std::isfinite(params.n) ? 1.0 / params.n : 0.0;
     } else {
         // The measured choice (lispsm_search.h): never worse than k = 0 (SSM) on its samples.
-        const WarpSearchInput search{view,    light,    in.sceneBounds, ls,       bv, in.visibleLit, in.visibleLitVertices,
-                                     zNearLs, els.x,    depthNear,      depthFar};
+        const WarpSearchInput search{view,    light,    in.sceneBounds,        ls,
+                                     bv,      in.visibleLit, in.visibleLitVertices, in.measuredReceivers,
+                                     zNearLs, els.x,    depthNear,             depthFar};
         const WarpSearchResult found = searchWarp(search, std::isfinite(diag.nOptVirtual) ? 1.0 / diag.nOptVirtual : 0.0);
         k = found.warp;
         diag.warpSamples = found.samples;

@@ -14,6 +14,7 @@ struct LispsmInputs {
     const std::vector<glm::dvec3>& bodyVertices;  // B
     const ConvexBody& visibleLit;                 // L n V n S (V n S for suns): where receivers are
     const std::vector<glm::dvec3>& visibleLitVertices;
+    const std::vector<SurfacePoint>& measuredReceivers;
     glm::dvec3 eWorld;                            // thesis 9.2.3
     double rayLength = 1.0;                       // a length of B's scale (for finite differences)
 };

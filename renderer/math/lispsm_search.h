@@ -19,6 +19,7 @@ struct WarpSearchInput {
     const std::vector<glm::dvec3>& bodyVertices;  // B: what the fitted map must contain
     const ConvexBody& visibleLit;                 // L n V n S (V n S for suns): where receivers can be
     const std::vector<glm::dvec3>& visibleLitVertices;
+    const std::vector<SurfacePoint>& measuredReceivers;  // ShadowParams::receiverPoints
     double zNearLs = 0.0;                         // B's nearest light-space z (P's near plane)
     double cx = 0.0;                              // the projection centre's light-space x
     double depthNear = 0.0, depthFar = 0.0;       // visible eye-depth range to sample
@@ -34,12 +35,17 @@ struct WarpSearchResult {
 // Receiver sample points with their normals: the vertices of the visible lit body between the
 // two depths, midpoints towards its centroid and the centroid, each with two normals (the bisector
 // of eye and light directions, and +y). Shared by the LiSPSM search and the PSM guard.
+// weight: scales the sample's footprint in the objective (1 for now: kept for weighting schemes
+// the sweep may justify; N.L weights were measured worse on spot views).
 struct ReceiverSample {
     glm::dvec3 point{0.0}, normal{0.0, 1.0, 0.0};
+    double weight = 1.0;
 };
+// With `measured` points (visible surfaces from the depth pre-pass, with their normals) those are
+// the receivers instead of the body's vertices (spot lights: the ones inside the cone).
 std::vector<ReceiverSample> receiverSamples(const ViewFrustum& view, const ShadowLight& light,
                                             const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
-                                            double depthNear, double depthFar);
+                                            double depthNear, double depthFar, const std::vector<SurfacePoint>& measured);
 // The largest texel footprint of a map over the samples (map and image of size 1: only ratios
 // between maps of the same view mean something).
 double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,

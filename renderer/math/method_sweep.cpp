@@ -23,6 +23,7 @@ glm::dvec3 fromAngles(double yaw, double pitch) {
 
 struct GroundSamples {
     std::vector<glm::dvec3> points;
+    std::vector<SurfacePoint> grid;  // the visible ground at the pre-pass's receiver grid of the image
     double nearest = 0.0, farthest = 0.0;  // eye depth range (what a depth pre-pass measures)
 };
 
@@ -40,6 +41,21 @@ GroundSamples groundSamples(const SweepCase& c, const SweepOptions& o) {
     const double ty = std::tan(0.5 * v.fovY), tx = ty * v.aspect;
     const double groundY = c.scene.min.y;
     g.nearest = std::numeric_limits<double>::infinity();
+    auto visibleGround = [&](double x, double y, glm::dvec3& p) {
+        const glm::dvec3 dir = f + r * (x * tx) + u * (y * ty);
+        if (!(dir.y < 0.0)) return false;
+        const double t = (groundY - v.eye.y) / dir.y;
+        if (!(t >= v.zNear && t <= v.zFar)) return false;
+        p = v.eye + dir * t;
+        return p.x >= c.scene.min.x && p.x <= c.scene.max.x && p.z >= c.scene.min.z && p.z <= c.scene.max.z;
+    };
+    constexpr int gx = ShadowParams::kReceiverGridX, gy = ShadowParams::kReceiverGridY;
+    for (int j = 0; j < gy; ++j)
+        for (int i = 0; i < gx; ++i) {
+            glm::dvec3 p;
+            if (visibleGround(-1.0 + (2.0 * i + 1.0) / gx, -1.0 + (2.0 * j + 1.0) / gy, p))
+                g.grid.push_back({p, glm::dvec3(0.0, 1.0, 0.0)});
+        }
     for (int j = 0; j < o.samplesY; ++j)
         for (int i = 0; i < o.samplesX; ++i) {
             const double x = -1.0 + (2.0 * i + 1.0) / o.samplesX, y = -1.0 + (2.0 * j + 1.0) / o.samplesY;
@@ -89,7 +105,7 @@ SweepCase makeCase(Rng& rng, bool spot) {
 }
 
 // The renderer's parameters for this view, with the pre-pass depth range (renderer.cpp).
-ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum& shadowView) {
+ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum& shadowView, bool receivers) {
     ShadowParams p;
     p.method = method;
     p.collectPolygons = false;
@@ -97,6 +113,8 @@ ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum&
         shadowView.zNear = std::min(0.5 * g.nearest, 0.5 * shadowView.zFar);
     p.lispsm.virtualFar = std::clamp(g.farthest, shadowView.zNear * 1.001, shadowView.zFar);
     p.lispsm.pseudoNear = g.nearest;
+    // The pre-pass's receiver grid (renderer/visible_depth.cpp, ShadowParams::kReceiverGridX/Y).
+    if (receivers) p.receiverPoints = g.grid;
     return p;
 }
 
@@ -105,7 +123,7 @@ SweepViewFigure figure(const SweepCase& c, const GroundSamples& g, ShadowMethod 
     out.p99 = std::numeric_limits<double>::quiet_NaN();
     if (g.points.empty()) return out;
     ViewFrustum shadowView = c.view;
-    const ShadowParams params = paramsFor(method, g, shadowView);
+    const ShadowParams params = paramsFor(method, g, shadowView, o.measuredReceivers);
     const ShadowSetup setup = computeShadowSetup(shadowView, c.light, c.scene, params);
     out.fallback = setup.diagnostics.fallback;
     if (!setup.valid) return out;

@@ -143,8 +143,8 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
             break;
         }
         case ShadowMethod::Lispsm: {
-            const LispsmInputs in{view,     basis, light, sceneBounds, ls, bv, receiverBody, receiverVertices,
-                                  eWorld,   rayLength};
+            const LispsmInputs in{view,         basis,   light, sceneBounds, ls, bv, receiverBody, receiverVertices,
+                                  params.receiverPoints, eWorld, rayLength};
             M = lispsmMatrix(in, params.lispsm, params.collectPolygons, diag);
             break;
         }
@@ -167,7 +167,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
                 // largest texel footprint over the visible receivers with the focused uniform
                 // map's and keep the better map, saying so.
                 const std::vector<ReceiverSample> receivers =
-                    receiverSamples(view, light, receiverBody, receiverVertices, depthNear, depthFar);
+                    receiverSamples(view, light, receiverBody, receiverVertices, depthNear, depthFar, params.receiverPoints);
                 const glm::dmat4 uniform = ssm(bv);
                 const double psmWorst = worstFootprintOf(M, view, receivers);
                 const double ssmWorst = worstFootprintOf(uniform, view, receivers);

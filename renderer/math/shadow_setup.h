@@ -66,12 +66,23 @@ struct LispsmParams {
     double n = 1.0;
 };
 
+// A visible surface point and its normal (unit), e.g. from the depth pre-pass.
+struct SurfacePoint {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+};
+
 struct ShadowParams {
     ShadowMethod method = ShadowMethod::Lispsm;
     LispsmParams lispsm;
     // PSM: use the focused SSM where PSM's largest texel footprint over the visible receivers is
     // worse (diagnostics.fallback says so). Off: the bare parameterization (closed-form checks).
     bool psmGuard = true;
+    // Visible surfaces with their normals (the depth pre-pass's coarse grid): where LiSPSM's warp
+    // search and PSM's guard measure the footprint. Empty: the visible lit body's vertices stand in.
+    std::vector<SurfacePoint> receiverPoints;
+    // The pixel grid the depth pre-pass samples them at (and the method sweep simulates).
+    static constexpr int kReceiverGridX = 8, kReceiverGridY = 6;
     // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
     bool collectPolygons = true;
 };

@@ -38,6 +38,21 @@ TEST(MethodSweep, LispsmNeverLosesToSsmByHalf) {
     EXPECT_EQ(psmSun.worse50, 0u) << psmSun.worstCase;
 }
 
+// Without the pre-pass's receiver points the warps measure at stand-ins (the visible lit body's
+// vertices): still never worse than SSM by half on the sun views.
+TEST(MethodSweep, WithoutMeasuredReceiversSunLispsmStillNeverLosesByHalf) {
+    SweepOptions o;
+    o.directionalViews = 300;
+    o.spotViews = 0;
+    o.seed = 5;
+    o.measuredReceivers = false;
+    const SweepReport r = runMethodSweep(o);
+    std::cout << r.text();
+    const auto& sun = figuresOf(r.directional, ShadowMethod::Lispsm);
+    EXPECT_EQ(sun.worse50, 0u) << sun.worstCase;
+    EXPECT_LE(sun.worse5, sun.views / 50) << "more than 2% of the sun views > 1.05x SSM";
+}
+
 // Hand-computed: a map fitted to [-1, 1]^2 on the ground seen straight down by an orthographic
 // camera of the same extent: one texel of a 2 x 2 map covers 100 / 2 = 50 pixels of a 100 px image.
 TEST(TexelFootprint, OrthographicMapsGiveTheRatioOfResolutions) {
