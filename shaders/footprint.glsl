@@ -13,8 +13,8 @@ uniform vec3 uViewForward;  // unit
 uniform vec3 uPixelRayDx;   // change of the view ray (axial component 1) per pixel to the right
 uniform vec3 uPixelRayDy;   // ... per pixel up
 
-vec2 texelDifferential(vec4 clip, vec3 dq) {
-    vec4 dclip = uWorldToShadowClip * vec4(dq, 0.0);
+vec2 texelDifferential(mat4 worldToClip, vec4 clip, vec3 dq) {
+    vec4 dclip = worldToClip * vec4(dq, 0.0);
     vec2 ndc = clip.xy / clip.w;
     return 0.5 * (dclip.xy - ndc * dclip.w) / clip.w / uShadowTexel;
 }
@@ -22,6 +22,7 @@ vec2 texelDifferential(vec4 clip, vec3 dq) {
 // 0 where nothing is measured (outside the map, grazing plane, degenerate projection).
 float texelFootprint(vec3 p, vec3 n) {
     vec4 clip = worldToShadowClip(p);
+    mat4 worldToClip = shadowClipMatrix(p);  // the split's own map with cascades
     if (!(abs(clip.w) > 1e-20) || any(greaterThan(abs(clip.xy / clip.w), vec2(1.0)))) return 0.0;
     vec3 d = p - uEye;
     float z = dot(d, uViewForward);
@@ -29,7 +30,7 @@ float texelFootprint(vec3 p, vec3 n) {
     if (abs(nd) < 1e-6 * length(d) || z <= 0.0) return 0.0;
     vec3 dqx = z * (uPixelRayDx - d * (dot(n, uPixelRayDx) / nd));
     vec3 dqy = z * (uPixelRayDy - d * (dot(n, uPixelRayDy) / nd));
-    mat2 J = mat2(texelDifferential(clip, dqx), texelDifferential(clip, dqy));
+    mat2 J = mat2(texelDifferential(worldToClip, clip, dqx), texelDifferential(worldToClip, clip, dqy));
     // Singular values of a 2x2 matrix: sigma^2 = (F -+ sqrt(F^2 - 4 det^2)) / 2, F = |J|_F^2.
     float f = dot(J[0], J[0]) + dot(J[1], J[1]);
     float det = J[0][0] * J[1][1] - J[0][1] * J[1][0];

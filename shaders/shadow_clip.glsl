@@ -10,6 +10,8 @@ uniform vec3 uShadowOrigin;
 // The lookup's map is the split's (the shadow pass itself renders one split at a time without
 // CASCADES, through uWorldToShadowClip).
 vec4 worldToShadowClip(vec3 p) { return cascadeClip(p, cascadeIndex(p)); }
+mat4 shadowClipMatrix(vec3 p) { return uCascadeClip[cascadeIndex(p)]; }
 #else
 vec4 worldToShadowClip(vec3 p) { return uWorldToShadowClip * vec4(p - uShadowOrigin, 1.0); }
+mat4 shadowClipMatrix(vec3 p) { return uWorldToShadowClip; }
 #endif
