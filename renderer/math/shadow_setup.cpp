@@ -11,6 +11,120 @@ namespace shadowlab {
 
 using namespace detail;
 
+namespace {
+
+// Input validation: a clear message, never a crash. nullptr when the input is usable.
+const char* invalidInput(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds) {
+    if (!finite(view.eye) || !finite(view.forward) || !finite(view.up) || !(glm::length(view.forward) > 0.0))
+        return "invalid view: non-finite position or zero forward vector";
+    if (!(view.fovY > 0.0 && view.fovY < 3.14) || !(view.aspect > 0.0) || !std::isfinite(view.aspect))
+        return "invalid view: fovY must be in (0, pi) and aspect > 0";
+    if (!(view.zNear > 0.0) || !(view.zFar > view.zNear) || !std::isfinite(view.zFar))
+        return "invalid view: need 0 < zNear < zFar";
+    if (!finite(light.direction) || !(glm::length(light.direction) > 0.0))
+        return "invalid light: zero or non-finite direction";
+    if (light.kind == ShadowLightKind::Spot && (!finite(light.position) || !std::isfinite(light.outerConeAngle)))
+        return "invalid spot light: non-finite position or cone angle";
+    if (sceneBounds.empty() || !finite(sceneBounds.min) || !finite(sceneBounds.max))
+        return "empty or non-finite scene bounds";
+    return nullptr;
+}
+
+// Caster culling data (casterCanReach): B's outward planes and bounds.
+void casterCullingData(const ConvexBody& B, const ShadowLight& light, const SpotFrustum& spotF, ShadowSetup& out) {
+    out.bodyPlanes = B.planes();
+    out.bodyBounds = B.bounds();
+    if (light.kind == ShadowLightKind::Spot) {
+        // Culling must not lose casters between the apex and L's near plane (B stops there):
+        // drop that plane and let the bounds reach the light.
+        // The near cap faces the light (normal -axis) at depth `nearPlane`; its plane, fitted to
+        // a possibly tiny face at a large offset, is only approximate, so match it loosely (any
+        // light-facing plane that close to the apex: dropping one is conservative anyway).
+        const glm::dvec3 axis = glm::normalize(light.direction);
+        std::erase_if(out.bodyPlanes, [&](const glm::dvec4& p) {
+            // The light's distance to the plane, with the plane's own normal: with the axis in
+            // its place the error is |n + axis| |position|, which at 7e4 from the origin let a
+            // cap survive and cull casters between the apex and L's near plane (issue 9).
+            const double depth = glm::dot(glm::dvec3(p), light.position) + p.w;
+            return glm::dot(glm::dvec3(p), -axis) > 1.0 - 1e-6 && depth <= 2.0 * spotF.nearPlane;
+        });
+        out.bodyBounds.extend(light.position);
+    }
+
+}
+
+// Linear depth (TSM, thesis ch. 5) over B, which contains every relevant caster.
+LinearShadowDepth linearDepthOver(const std::vector<glm::dvec3>& bv, const ShadowLight& light, const ViewFrustum& view,
+                                  const SpotFrustum& spotF) {
+    const bool spot = light.kind == ShadowLightKind::Spot;
+    const glm::dvec3 l = glm::normalize(light.direction);
+    LinearShadowDepth lin;
+    lin.radial = spot;
+    lin.axis = l;
+    lin.origin = spot ? light.position : view.eye;
+    Range r;
+    for (const auto& p : bv) r.add(spot ? glm::length(p - lin.origin) : glm::dot(p - lin.origin, l));
+    if (spot) r.lo = std::min(r.lo, spotF.nearPlane);  // the apex region is not at a vertex
+    const double pad = std::max(1e-9 * std::max(std::abs(r.lo), std::abs(r.hi)), 1e-6 * (r.hi - r.lo));
+    lin.nearDepth = r.lo - pad;
+    lin.farDepth = r.hi + pad;
+    return lin;
+}
+
+// SsmUnfocused fits the whole scene box (spot: S n L), and B with it.
+std::vector<glm::dvec3> unfocusedPoints(const std::vector<glm::dvec3>& bv, const ShadowLight& light,
+                                        const SpotFrustum& spotF, const Aabb& sceneBounds) {
+    std::vector<glm::dvec3> pts;
+    if (light.kind == ShadowLightKind::Spot) {
+        ConvexBody sl = ConvexBody::fromAabb(sceneBounds);
+        sl.clip(spotBody(light, spotF));
+        pts = sl.vertices();
+    } else {
+        for (int i = 0; i < 8; ++i) pts.push_back(sceneBounds.corner(i));
+    }
+    if (pts.empty()) pts = bv;
+    pts.insert(pts.end(), bv.begin(), bv.end());
+    return pts;
+}
+
+// PSM (psm.cpp) with its guard: where its largest texel footprint over the receivers is worse
+// than the focused uniform map's (`uniform`), that map is used and the fallback says so. Issue 9
+// measured PSM above 1.5x SSM's footprint on 2.5% of sun and 8% of spot views without it;
+// Stamminger & Drettakis (section 6) name such hard cases. `receivers` null: no guard.
+glm::dmat4 guardedPsm(const ViewFrustum& view, const ViewBasis& basis, const ShadowLight& light,
+                      const std::vector<glm::dvec3>& bv, const glm::dmat4& uniform,
+                      const std::vector<ReceiverSample>* receivers, ShadowDiagnostics& diag, bool& reverse) {
+    diag.focused = true;
+    const PsmResult psm = perspectiveShadowMap(view, basis, light, glm::normalize(light.direction), bv);
+    diag.psmMoveBack = psm.moveBack;
+    diag.psmNear = psm.zNear;
+    diag.psmFar = psm.zFar;
+    diag.psmLightKind = psm.kind;
+    diag.projectionCenter = psm.lightWorld;
+    diag.hasProjectionCenter = psm.hasLightWorld;
+    reverse = false;
+    if (!psm.ok) {
+        diag.fallback = "PSM: no shadow frustum from the post-perspective light contains B; focused SSM used";
+        return uniform;
+    }
+    if (receivers) {
+        const double psmWorst = worstFootprintOf(psm.matrix, view, *receivers);
+        const double ssmWorst = worstFootprintOf(uniform, view, *receivers);
+        diag.estimatedGainOverSsm = psmWorst > 0.0 && ssmWorst > 0.0 ? ssmWorst / psmWorst : 1.0;
+        if (psmWorst > ssmWorst) {
+            char why[160];
+            std::snprintf(why, sizeof why,
+                          "PSM: its worst texel footprint here is %.3gx the uniform map's; focused SSM used",
+                          psmWorst / ssmWorst);
+            diag.fallback = why;
+            return uniform;
+        }
+    }
+    reverse = psm.reverse;
+    return psm.matrix;
+}
+
+}  // namespace
 
 ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
                                const ShadowParams& params) {
@@ -18,24 +132,12 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     ShadowDiagnostics& diag = out.diagnostics;
     diag.method = params.method;
 
-    // --- Input validation: a clear message, never a crash.
     auto reject = [&](const char* why) {
         diag.fallback = why;
         out.valid = false;
         return out;
     };
-    if (!finite(view.eye) || !finite(view.forward) || !finite(view.up) || !(glm::length(view.forward) > 0.0))
-        return reject("invalid view: non-finite position or zero forward vector");
-    if (!(view.fovY > 0.0 && view.fovY < 3.14) || !(view.aspect > 0.0) || !std::isfinite(view.aspect))
-        return reject("invalid view: fovY must be in (0, pi) and aspect > 0");
-    if (!(view.zNear > 0.0) || !(view.zFar > view.zNear) || !std::isfinite(view.zFar))
-        return reject("invalid view: need 0 < zNear < zFar");
-    if (!finite(light.direction) || !(glm::length(light.direction) > 0.0))
-        return reject("invalid light: zero or non-finite direction");
-    if (light.kind == ShadowLightKind::Spot && (!finite(light.position) || !std::isfinite(light.outerConeAngle)))
-        return reject("invalid spot light: non-finite position or cone angle");
-    if (sceneBounds.empty() || !finite(sceneBounds.min) || !finite(sceneBounds.max))
-        return reject("empty or non-finite scene bounds");
+    if (const char* why = invalidInput(view, light, sceneBounds)) return reject(why);
 
     const ViewBasis basis = viewBasis(view);
     const glm::dvec3 l = glm::normalize(light.direction);
@@ -53,38 +155,9 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     if (B.empty()) return reject("B is empty: nothing visible is lit (everything counts as lit)");
 
     const std::vector<glm::dvec3> bv = B.vertices();
-    out.bodyPlanes = B.planes();
-    out.bodyBounds = B.bounds();
-    if (spot) {
-        // Culling must not lose casters between the apex and L's near plane (B stops there):
-        // drop that plane and let the bounds reach the light.
-        // The near cap faces the light (normal -axis) at depth `nearPlane`; its plane, fitted to
-        // a possibly tiny face at a large offset, is only approximate, so match it loosely (any
-        // light-facing plane that close to the apex: dropping one is conservative anyway).
-        const glm::dvec3 axis = l;
-        std::erase_if(out.bodyPlanes, [&](const glm::dvec4& p) {
-            // The light's distance to the plane, with the plane's own normal: with the axis in
-            // its place the error is |n + axis| |position|, which at 7e4 from the origin let a
-            // cap survive and cull casters between the apex and L's near plane (issue 9).
-            const double depth = glm::dot(glm::dvec3(p), light.position) + p.w;
-            return glm::dot(glm::dvec3(p), -axis) > 1.0 - 1e-6 && depth <= 2.0 * spotF.nearPlane;
-        });
-        out.bodyBounds.extend(light.position);
-    }
+    casterCullingData(B, light, spotF, out);
 
-    // Linear depth (TSM, thesis ch. 5) over B, which contains every relevant caster.
-    {
-        LinearShadowDepth& lin = out.linearDepth;
-        lin.radial = spot;
-        lin.axis = l;
-        lin.origin = spot ? light.position : view.eye;
-        Range r;
-        for (const auto& p : bv) r.add(spot ? glm::length(p - lin.origin) : glm::dot(p - lin.origin, l));
-        if (spot) r.lo = std::min(r.lo, spotF.nearPlane);  // the apex region is not at a vertex
-        const double pad = std::max(1e-9 * std::max(std::abs(r.lo), std::abs(r.hi)), 1e-6 * (r.hi - r.lo));
-        lin.nearDepth = r.lo - pad;
-        lin.farDepth = r.hi + pad;
-    }
+    out.linearDepth = linearDepthOver(bv, light, view, spotF);
 
     // Where receivers can be: L n V n S (V n S for directional lights), its vertices listed once
     // for e_world, the LiSPSM warp search and the PSM guard.
@@ -129,16 +202,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         }
         case ShadowMethod::SsmUnfocused: {
             diag.focused = false;
-            std::vector<glm::dvec3> pts;
-            if (spot) {
-                ConvexBody sl = ConvexBody::fromAabb(sceneBounds);
-                sl.clip(spotBody(light, spotF));
-                pts = sl.vertices();
-            } else {
-                for (int i = 0; i < 8; ++i) pts.push_back(sceneBounds.corner(i));
-            }
-            if (pts.empty()) pts = bv;
-            pts.insert(pts.end(), bv.begin(), bv.end());
+            const std::vector<glm::dvec3> pts = unfocusedPoints(bv, light, spotF, sceneBounds);
             M = ssm(pts);
             break;
         }
@@ -149,43 +213,12 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
             break;
         }
         case ShadowMethod::Psm: {
-            diag.focused = true;
-            const PsmResult psm = perspectiveShadowMap(view, basis, light, l, bv);
-            diag.psmMoveBack = psm.moveBack;
-            diag.psmNear = psm.zNear;
-            diag.psmFar = psm.zFar;
-            diag.psmLightKind = psm.kind;
-            diag.projectionCenter = psm.lightWorld;
-            diag.hasProjectionCenter = psm.hasLightWorld;
-            if (psm.ok) {
-                M = psm.matrix;
-                reverse = psm.reverse;
-            }
-            if (psm.ok && params.psmGuard) {
-                // The guard (Stamminger & Drettakis 6 name the hard cases; issue 9 measured PSM
-                // above 1.5x SSM's footprint on 2.5% of sun and 8% of spot views): compare the
-                // largest texel footprint over the visible receivers with the focused uniform
-                // map's and keep the better map, saying so.
-                const std::vector<ReceiverSample> receivers =
-                    receiverSamples(view, light, receiverBody, receiverVertices, depthNear, depthFar, params.receiverPoints);
-                const glm::dmat4 uniform = ssm(bv);
-                const double psmWorst = worstFootprintOf(M, view, receivers);
-                const double ssmWorst = worstFootprintOf(uniform, view, receivers);
-                diag.estimatedGainOverSsm = psmWorst > 0.0 && ssmWorst > 0.0 ? ssmWorst / psmWorst : 1.0;
-                if (psmWorst > ssmWorst) {
-                    char why[160];
-                    std::snprintf(why, sizeof why,
-                                  "PSM: its worst texel footprint here is %.3gx the uniform map's; focused SSM used",
-                                  psmWorst / ssmWorst);
-                    diag.fallback = why;
-                    M = uniform;
-                    reverse = false;
-                }
-            } else if (!psm.ok) {
-                diag.fallback = "PSM: no shadow frustum from the post-perspective light contains B; focused SSM used";
-                M = ssm(bv);
-                reverse = false;
-            }
+            const std::vector<ReceiverSample> receivers =
+                params.psmGuard ? receiverSamples(view, light, receiverBody, receiverVertices, depthNear, depthFar,
+                                                  params.receiverPoints)
+                                : std::vector<ReceiverSample>{};
+            M = guardedPsm(view, basis, light, bv, uniformMatrix(ls, bv), params.psmGuard ? &receivers : nullptr, diag,
+                           reverse);
             break;
         }
     }
