@@ -3,6 +3,7 @@
 #include "math/random.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,19 @@ namespace shadowlab {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// A fallback's kind: its message with the figures in it (e.g. PSM's guard ratio) as '#', so the
+// report counts kinds, not values.
+std::string reasonKind(std::string reason) {
+    std::string out;
+    for (std::size_t i = 0; i < reason.size(); ++i) {
+        const bool number = std::isdigit(static_cast<unsigned char>(reason[i])) ||
+                            (reason[i] == '.' && i + 1 < reason.size() && std::isdigit(static_cast<unsigned char>(reason[i + 1])));
+        if (!number) out += reason[i];
+        else if (out.empty() || out.back() != '#') out += '#';
+    }
+    return out;
+}
 
 std::uint64_t mix(std::uint64_t x) {
     x += 0x9E3779B97F4A7C15ull;
@@ -265,7 +279,7 @@ StressReport runStress(const StressOptions& options) {
             }
             if (!setup.diagnostics.fallback.empty()) {
                 ++ms.fallbacks;
-                ++ms.fallbackReasons[setup.diagnostics.fallback];
+                ++ms.fallbackReasons[reasonKind(setup.diagnostics.fallback)];
                 if (ms.firstFallback.empty()) ms.firstFallback = "case " + std::to_string(i) + ": " + c.describe();
             }
             double worst = 0.0;
