@@ -194,6 +194,8 @@ json parseJson(const std::string& text, const LoadLimits& limits) {
         return j;
     } catch (const json::parse_error& e) {
         fail("not a glTF file: invalid JSON at " + lineAndColumn(text, e.byte));
+    } catch (const json::exception&) {  // e.g. 2e2002 (out_of_range 406): no library text in the message
+        fail("not a glTF file: a number in the JSON is out of the range of a double");
     }
 }
 

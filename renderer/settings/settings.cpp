@@ -108,7 +108,9 @@ std::string expected(const std::string& key, const json& slot) {
     return "3 finite numbers [x, y, z]";
 }
 
-std::string shown(const json& value) { return cut(value.is_string() ? "'" + value.get<std::string>() + "'" : value.dump()); }
+// Invalid UTF-8 in a value is shown replaced (dump() would throw: found by fuzz_settings).
+std::string dumped(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
+std::string shown(const json& value) { return cut(value.is_string() ? "'" + value.get<std::string>() + "'" : dumped(value)); }
 
 // Checks one value against the slot it replaces (range-checking doubles before any conversion to
 // int, which is undefined behaviour when out of range) and returns what to store.
@@ -205,7 +207,7 @@ void collectKeys(const json& j, const std::string& path, std::vector<std::string
         for (auto it = j.begin(); it != j.end(); ++it) collectKeys(it.value(), path.empty() ? it.key() : path + "." + it.key(), out);
         return;
     }
-    out.push_back(path + "=" + (j.is_string() ? j.get<std::string>() : j.dump()));
+    out.push_back(path + "=" + (j.is_string() ? j.get<std::string>() : dumped(j)));
 }
 
 // "1,2,3" or "ssm,psm" into a JSON array: numbers where every item is one, else names.
@@ -239,6 +241,9 @@ bool fromJsonText(std::string_view text, Settings& settings, std::string& error)
         patch = json::parse(text);
     } catch (const json::parse_error& e) {
         error = "not valid JSON at " + lineAndColumn(text, e.byte);
+        return false;
+    } catch (const json::exception&) {  // e.g. 2e2002: a number no double holds (found by fuzz_settings)
+        error = "not usable JSON: a number out of the range of a double";
         return false;
     }
     return fromJson(patch, settings, error);

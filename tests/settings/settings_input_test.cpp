@@ -169,3 +169,21 @@ TEST(SettingsInput, SettingsTheSceneMakesMeaninglessGiveNotices) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// Found by fuzz_settings (issue 12): both aborted the process with an uncaught json exception.
+TEST(SettingsInput, FuzzFoundInputsGiveMessagesNotAborts) {
+    Settings s;
+    std::string error;
+    EXPECT_FALSE(setByKey(s, "camera.position=\xff", error));  // invalid UTF-8 in a list value
+    EXPECT_NE(error.find("camera.position"), std::string::npos) << error;
+    error.clear();
+    EXPECT_FALSE(fromJsonText("{\"shadowMapSize\": 2e2002}", s, error));  // beyond any double
+    EXPECT_NE(error.find("out of the range"), std::string::npos) << error;
+    EXPECT_EQ(error.find("json.exception"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace shadowlab
