@@ -31,7 +31,7 @@ void addSettingsCommand(CLI::App& app) {
         for (const SettingDescription& d : settings)
             std::cout << "  " << std::setw(int(keyWidth)) << d.key << "  " << std::setw(int(typeWidth)) << d.type << "  "
                       << std::setw(int(rangeWidth)) << d.range << "  " << d.defaultValue << "\n";
-        std::cout << "\nLoad limits (--limit KEY=N on info and render; a scene over one is refused, an image over a "
+        std::cout << "\nLoad limits (--limit KEY=N on info, render and the viewer; a scene over one is refused, an image over a "
                      "texture limit is skipped with a warning):\n";
         for (const std::string& line : describeLoadLimits(LoadLimits{})) std::cout << "  " << line << "\n";
     });

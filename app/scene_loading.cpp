@@ -8,11 +8,15 @@
 
 namespace shadowlab::app {
 
-SceneLoadJob::SceneLoadJob(std::string file, std::function<void()> onDone)
+SceneLoadJob::SceneLoadJob(std::string file, LoadOptions options, std::function<void()> onDone)
     : file_(std::move(file)), start_(std::chrono::steady_clock::now()) {
-    thread_ = std::thread([state = state_, file = file_, onDone = std::move(onDone)] {
+    // The callback holds the shared state, not `this`: a detached thread outlives the job.
+    options.progress = [state = std::weak_ptr<State>(state_)](double fraction) {
+        if (auto s = state.lock()) s->progress.store(fraction, std::memory_order_relaxed);
+    };
+    thread_ = std::thread([state = state_, file = file_, options = std::move(options), onDone = std::move(onDone)] {
         try {
-            state->result = loadScene(file);
+            state->result = loadScene(file, options);
         } catch (const std::bad_alloc&) {
             state->result = LoadResult{};
             state->result.error = file + ": out of memory while loading";

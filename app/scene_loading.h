@@ -17,9 +17,10 @@ namespace shadowlab::app {
 
 class SceneLoadJob {
 public:
-    // Starts loading `file` on a new thread; `onDone` is called from that thread when the result is
-    // ready (the viewer posts an empty GLFW event to wake its idle wait).
-    SceneLoadJob(std::string file, std::function<void()> onDone);
+    // Starts loading `file` with `options` (their limits; the progress callback is the job's own)
+    // on a new thread; `onDone` is called from that thread when the result is ready (the viewer
+    // posts an empty GLFW event to wake its idle wait).
+    SceneLoadJob(std::string file, LoadOptions options, std::function<void()> onDone);
     // Joins a finished thread; an unfinished one is detached (closing the window must not wait for
     // a slow or stuck file), its result dropped.
     ~SceneLoadJob();
@@ -29,6 +30,8 @@ public:
     bool done() const { return state_->done.load(std::memory_order_acquire); }
     const std::string& file() const { return file_; }
     double secondsRunning() const;
+    // The loader's fraction done (LoadOptions::progress), 0 .. 1; safe from any thread.
+    double progress() const { return state_->progress.load(std::memory_order_relaxed); }
     // The result, once done() (joins the thread).
     LoadResult take();
 
@@ -36,6 +39,7 @@ private:
     struct State {
         LoadResult result;
         std::atomic<bool> done{false};
+        std::atomic<double> progress{0.0};
     };
     std::string file_;
     std::chrono::steady_clock::time_point start_;

@@ -11,22 +11,14 @@
 //
 // Input arrives as events (viewer_input.h), scenes load on a worker thread (scene_loading.h), and an
 // idle window waits for events instead of redrawing (see the wait in the loop).
-#include "camera_controller.h"
 #include "commands.h"
-#include "file_panel.h"
 #include "gl/debug_output.h"
-#include "ground_plane.h"
 #include "png_text.h"
 #include "render_target.h"
-#include "scene_loading.h"
 #include "screen_overlays.h"
 #include "scenes/animation.h"
-#include "stats_panel.h"
-#include "view_setup.h"
-#include "view_state.h"
-#include "viewer_accuracy.h"
-#include "viewer_ab.h"
 #include "viewer_frame.h"
+#include "viewer_open.h"
 #include "viewer_window.h"
 
 #include <backends/imgui_impl_glfw.h>
@@ -56,6 +48,7 @@ struct ViewerOptions {
     bool noUi = false;       // start with the panels hidden (F1 toggles)
     int width = 1280, height = 720;
     SettingsOverrides overrides;
+    std::vector<std::string> limits;   // --limit KEY=N load budgets
     std::string abView;                // --ab A.json: start in A/B compare with A from this view state
     std::string abMode = "side";       // --ab-mode side|wipe|diff
 };
@@ -72,144 +65,6 @@ bool writeTextFile(const std::string& file, const std::string& text, std::string
         return false;
     }
     return true;
-}
-
-ui::AnimationInfo animationInfo(const Scene& scene) {
-    ui::AnimationInfo info;
-    info.duration = sceneAnimationDuration(scene);
-    info.animations = int(scene.animations.size());
-    for (const Animation& a : scene.animations) info.channels += int(a.channels.size());
-    return info;
-}
-
-void addNotices(ui::ViewerStatus& status, const std::vector<std::string>& changes) {
-    for (const std::string& change : changes) {
-        std::cerr << "shadowlab: adjusted " << change << "\n";
-        status.notices.push_back("adjusted " + change);
-    }
-    constexpr std::size_t kMaxNotices = 6;
-    if (status.notices.size() > kMaxNotices)
-        status.notices.erase(status.notices.begin(), status.notices.end() - kMaxNotices);
-}
-
-// Everything the loop owns besides the GL objects and the window.
-struct ViewerState {
-    std::optional<Scene> scene;
-    Settings settings;
-    ui::ViewerStatus status;
-    ui::ObserverView observer;
-    ui::ViewStateUi viewState;
-    ui::FileUi file;
-    ui::AnimationInfo animation;
-    bool showUi = true;
-    bool screenshotRequested = false;
-    double posedTime = 0.0;
-    FrameStats stats;
-    std::vector<FrameStats> paneStats;  // per split view, left to right
-    bool splitShown = false;            // split compare was on last frame
-    CameraController controller;
-    FlyKeys fly;
-    DragTracker drag;
-    double scroll = 0.0;
-    std::unique_ptr<SceneLoadJob> load;
-    ui::AbCompare ab;  // A/B compare of two settings (ui/ab_panel.h)
-    std::string abView;  // --ab, applied when the first scene arrives
-    std::optional<GroundPlaneUndo> groundPlane;  // added to the scene (display.groundPlane)
-    ViewerAccuracy accuracy;  // the accuracy panel (app/viewer_accuracy.h)
-    bool initialLoad = true;  // the scene of the command line (its settings take the overrides)
-    bool uploadNext = false;  // a finished load is uploaded next frame, after its "uploading" frame
-};
-
-void startSceneLoad(ViewerState& state, const std::string& file) {
-    state.load = std::make_unique<SceneLoadJob>(file, [] { glfwPostEmptyEvent(); });
-    state.uploadNext = false;
-}
-
-// Applies a view state (JSON, or the settings embedded in a screenshot) as a whole or not at all.
-void applyViewFile(ViewerState& state, const std::string& file) {
-    Settings loaded = state.settings;
-    std::string error;
-    if (!readViewFile(file, loaded, error)) {
-        state.status.lastError = error;
-        std::cerr << "shadowlab: " << error << "\n";
-        return;
-    }
-    addNotices(state.status, sanitize(loaded));
-    state.settings = loaded;
-    state.status.lastError.clear();
-    state.status.lastMessage = "applied view " + file;
-    state.file.remember(file);
-}
-
-void openFile(ViewerState& state, const std::string& file) {
-    switch (fileKindOf(file)) {
-        case FileKind::Scene:
-            if (state.load) {
-                state.status.lastError = "still loading " + state.load->file() + "; open " + file + " afterwards";
-                return;
-            }
-            startSceneLoad(state, file);
-            return;
-        case FileKind::View:
-        case FileKind::Screenshot:
-            applyViewFile(state, file);
-            return;
-        case FileKind::Unknown:
-            state.status.lastError = file + ": not a scene (.gltf, .glb), view state (.json) or screenshot (.png)";
-            return;
-    }
-}
-
-// A finished load: the new scene replaces the current one, or the error is shown and the current
-// scene stays.
-void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverrides& overrides) {
-    const std::string file = state.load->file();
-    LoadResult loaded = state.load->take();
-    state.load.reset();
-    for (const std::string& w : loaded.warnings) std::cerr << "shadowlab: warning: " << w << "\n";
-    const bool initial = std::exchange(state.initialLoad, false);
-    if (!loaded.ok()) {
-        state.status.lastError = loaded.error;
-        std::cerr << "shadowlab: " << loaded.error << "\n";
-        // A bad scene on the command line: open the default scene instead of exiting.
-        if (initial && !state.scene && file != defaultScenePath()) {
-            state.initialLoad = true;
-            startSceneLoad(state, defaultScenePath());
-        }
-        return;
-    }
-    state.scene = std::move(loaded.scene);
-    state.groundPlane.reset();  // the new scene has none yet; syncGroundPlane adds it if asked
-    Scene& scene = *state.scene;
-    if (initial) {
-        state.settings = initialSettings(scene);
-        std::string error;
-        if (!applyOverrides(state.settings, overrides, error)) state.status.lastError = error;
-        if (!state.abView.empty()) {  // --ab: A is the command line's settings with that view state on top
-            Settings a = state.settings;
-            if (readViewFile(state.abView, a, error)) {
-                state.ab.a = a;
-                state.ab.active = true;
-            } else {
-                state.status.lastError = error;
-            }
-        }
-    } else {
-        state.settings.camera = initialSettings(scene).camera;
-        state.settings.animation.time = 0.0;
-        state.status.lastError.clear();
-    }
-    // The pose at the view's time, so a loaded view shows the frame it was saved at.
-    animateScene(scene, state.settings.animation.time);
-    state.posedTime = state.settings.animation.time;
-    renderer.setScene(scene);
-    forgetScene(state.accuracy);
-    state.status.sceneName = file;
-    state.status.sceneTriangles = scene.triangleCount();
-    state.status.lastMessage = "opened " + file;
-    state.animation = animationInfo(scene);
-    state.controller.pivot = scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
-    state.file.remember(file);
 }
 
 void runAction(ViewerState& state, ViewerAction action, double aspect) {
@@ -240,10 +95,11 @@ glm::dvec2 toFramebuffer(GLFWwindow* window, const glm::dvec2& p) {
 void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow* window, const Layout& layout) {
     const ImGuiIO& io = ImGui::GetIO();  // what ImGui wanted at the end of the last frame
     const double aspect = layout.views.empty() ? 1.0 : double(layout.views[0].width) / layout.views[0].height;
-    auto overObserver = [&] {
+    auto insetUnderCursor = [&] {
         const glm::dvec2 p = toFramebuffer(window, state.drag.cursor());
-        return contains(layout.observerInset, p.x, p.y);
+        return insetAt(layout, p.x, p.y);
     };
+    auto overObserver = [&] { return insetUnderCursor() == InsetKind::Observer; };
     for (const InputEvent& e : events) {
         switch (e.kind) {
             case InputKind::Key: {
@@ -255,8 +111,14 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
             }
             case InputKind::MouseButton:
                 if (e.action == GLFW_RELEASE) {
-                    state.drag.onRelease();
+                    // A click (no drag) on an inset enlarges it, or shrinks it back.
+                    const bool click = state.drag.onRelease();
+                    const InsetKind pressed = std::exchange(state.pressedInset, InsetKind::None);
+                    if (click && e.code == GLFW_MOUSE_BUTTON_LEFT && pressed != InsetKind::None &&
+                        insetUnderCursor() == pressed)
+                        state.enlargedInset = state.enlargedInset == pressed ? InsetKind::None : pressed;
                 } else if (e.code == GLFW_MOUSE_BUTTON_LEFT || e.code == GLFW_MOUSE_BUTTON_RIGHT) {
+                    state.pressedInset = io.WantCaptureMouse ? InsetKind::None : insetUnderCursor();
                     const DragTarget target = io.WantCaptureMouse ? DragTarget::None
                                               : overObserver()    ? DragTarget::Observer
                                               : e.code == GLFW_MOUSE_BUTTON_LEFT ? DragTarget::Look
@@ -306,6 +168,7 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
         if (shown[i] == ShadowMethod::Psm && !ctx.psmStats) ctx.psmStats = &state.paneStats[i];
     }
     const ui::ControlResult controls = ui::drawControlWindow(state.settings, ctx, float(fbWidth), float(fbHeight));
+    state.panelCollapsed = controls.collapsed;
     if (controls.changed) addNotices(state.status, sanitize(state.settings));
     if (controls.requests.save) {
         const std::string file = state.viewState.file;
@@ -388,7 +251,8 @@ void runViewer(const ViewerOptions& options) {
         // Bad --view / --set values are refused before a window opens (a bad scene is not: the
         // window shows its error over the default scene).
         Settings probe;
-        if (!applyOverrides(probe, options.overrides, error)) {
+        LoadOptions load;
+        if (!applyOverrides(probe, options.overrides, error) || !applyLoadLimits(load, options.limits, error)) {
             std::cerr << "shadowlab: " << error << "\n";
             throw CLI::RuntimeError(1);
         }
@@ -422,6 +286,7 @@ void runViewer(const ViewerOptions& options) {
 
     ViewerState state;
     state.showUi = !options.noUi;
+    applyLoadLimits(state.loadOptions, options.limits, error);  // checked above
     state.abView = options.abView;
     if (options.abMode == "wipe") state.ab.mode = ui::AbMode::Wipe;
     else if (options.abMode == "diff") state.ab.mode = ui::AbMode::Difference;
@@ -466,8 +331,8 @@ void runViewer(const ViewerOptions& options) {
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
         handleInput(state, std::move(input), window.get(),
-                    layoutFrame(fbWidth, fbHeight, state.showUi, state.settings,
-                                int(framePanes(state.ab, state.settings).size())));
+                    layoutFrame(fbWidth, fbHeight, state.showUi && !state.panelCollapsed, state.settings,
+                                int(framePanes(state.ab, state.settings).size()), state.enlargedInset));
         const Settings before = state.settings;
 
         ImGui_ImplOpenGL3_NewFrame();
@@ -475,7 +340,8 @@ void runViewer(const ViewerOptions& options) {
         ImGui::NewFrame();
         if (state.showUi) drawPanels(state, fbWidth, fbHeight);
         const std::vector<Pane> panes = framePanes(state.ab, state.settings);
-        const Layout layout = layoutFrame(fbWidth, fbHeight, state.showUi, state.settings, int(panes.size()));
+        const Layout layout =
+            layoutFrame(fbWidth, fbHeight, state.showUi && !state.panelCollapsed, state.settings, int(panes.size()), state.enlargedInset);
         if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state, dt));
         updateTitle(window.get(), state, windowTitle);
 
@@ -509,7 +375,8 @@ void runViewer(const ViewerOptions& options) {
         const double frameCpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count();
 
         ui::LoadingInfo loading;
-        if (state.load) loading = {true, state.load->file(), state.load->secondsRunning(), state.uploadNext};
+        if (state.load)
+            loading = {true, state.load->file(), state.load->secondsRunning(), state.uploadNext, state.load->progress()};
         ui::drawMessageToast(state.status, loading, 0.0f, float(layout.viewWidth));
         // F12 without panels: the rendered 3D area as it is now, before any ImGui drawing.
         std::optional<RgbaImage> bareShot;
@@ -541,7 +408,10 @@ void runViewer(const ViewerOptions& options) {
             saveScreenshot(state, bareShot ? *bareShot : readFramebuffer(0, 0, 0, fbWidth, fbHeight),
                            ui::screenshotFileName(state.settings, std::time(nullptr)), true);
         glfwSwapBuffers(window.get());
-        if (!(state.settings == before)) framesOwed = kSettleFrames;
+        if (!(state.settings == before)) {
+            framesOwed = kSettleFrames;
+            noteSceneNotices(state);
+        }
         framesOwed = std::max(0, framesOwed - 1);
         if (counting && ++frame >= options.frames) break;
     }
@@ -571,6 +441,7 @@ void addViewerOptions(CLI::App& app) {
     app.add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
     app.add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm or lispsm");
     app.add_option("--set", options->overrides.sets, "a setting as key=value (repeatable)");
+    addLoadLimitOption(app, options->limits);
     app.add_option("--ab", options->abView,
                    "start in A/B compare: A = these view-state settings (JSON or screenshot), B = the current ones");
     app.add_option("--ab-mode", options->abMode, "A/B compare shown as side (A | B), wipe or diff")

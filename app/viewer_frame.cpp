@@ -25,7 +25,15 @@ std::vector<Pane> splitPanes(const Settings& settings) {
     return panes;
 }
 
-Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount) {
+InsetKind insetAt(const Layout& layout, double x, double y) {
+    if (contains(layout.shadowMapInset, x, y)) return InsetKind::ShadowMap;
+    if (contains(layout.lightViewInset, x, y)) return InsetKind::LightView;
+    if (contains(layout.observerInset, x, y)) return InsetKind::Observer;
+    return InsetKind::None;
+}
+
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount,
+                   InsetKind enlarged) {
     Layout l;
     l.fbWidth = fbWidth;
     l.fbHeight = fbHeight;
@@ -39,16 +47,28 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
     const int margin = 12;
     const double size = std::clamp(settings.overlays.insetSize, 0.5, 2.5);
     const int side = std::max(64, int(size * std::min({fbHeight / 3, l.viewWidth / 4, 360})));
-    int x = margin;
-    const int y = fbHeight - side - margin;
-    auto place = [&](InsetRect& r, bool on, int width) {
-        if (!on) return;
-        r = {x, y, width, side};
-        x += width + margin + 4;
+    const int bigSide = std::max(side, std::min(fbHeight - 2 * margin, (l.viewWidth - 2 * margin) * 3 / 4));
+    struct Slot {
+        InsetRect* rect;
+        bool on;
+        InsetKind kind;
+        int aspectNum, aspectDen;  // width : height
     };
-    place(l.shadowMapInset, settings.overlays.shadowMapInset, side);
-    place(l.lightViewInset, settings.overlays.lightViewInset, side);
-    place(l.observerInset, settings.overlays.observerInset, side * 4 / 3);
+    std::vector<Slot> slots = {{&l.shadowMapInset, settings.overlays.shadowMapInset, InsetKind::ShadowMap, 1, 1},
+                               {&l.lightViewInset, settings.overlays.lightViewInset, InsetKind::LightView, 1, 1},
+                               {&l.observerInset, settings.overlays.observerInset, InsetKind::Observer, 4, 3}};
+    // The enlarged inset first, at the left edge (at 4:3 and 3/4 of the width it still fits).
+    std::stable_partition(slots.begin(), slots.end(), [&](const Slot& s) { return s.kind == enlarged; });
+    int x = margin;
+    for (const Slot& slot : slots) {
+        if (!slot.on) continue;
+        const int height = slot.kind == enlarged ? bigSide : side;
+        const int width = height * slot.aspectNum / slot.aspectDen;
+        // Beside an enlarged inset the small ones are left out once they no longer fit.
+        if (enlarged != InsetKind::None && slot.kind != enlarged && x + width > l.viewWidth - margin) continue;
+        *slot.rect = {x, fbHeight - height - margin, width, height};
+        x += width + margin + 4;
+    }
     return l;
 }
 

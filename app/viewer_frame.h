@@ -23,8 +23,16 @@ struct Layout {
 
 InsetRect toGl(const InsetRect& r, int fbHeight);
 bool contains(const InsetRect& r, double x, double y);
-// `paneCount`: views side by side (0: as many as the split-compare methods).
-Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount = 0);
+
+// An inset of the 3D area; a click on one enlarges it (item 9 of issue 14), a second click shrinks it.
+enum class InsetKind { None, ShadowMap, LightView, Observer };
+InsetKind insetAt(const Layout& layout, double x, double y);
+
+// `paneCount`: views side by side (0: as many as the split-compare methods). `enlarged`: that
+// inset as large as the 3D area allows (its height: the area's less the margins, at most 3/4 of
+// its width), the others at their size beside it while they fit.
+Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount = 0,
+                   InsetKind enlarged = InsetKind::None);
 
 // One view of the frame: the settings it is rendered with and its caption ("" for none).
 struct Pane {

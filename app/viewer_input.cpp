@@ -77,7 +77,7 @@ void FlyKeys::clear() {
 
 void DragTracker::onCursor(const glm::dvec2& position) {
     cursor_ = position;
-    if (target_ == DragTarget::None) return;
+    if (!pressed_) return;
     if (reanchor_) {
         reanchor_ = false;
         anchor_ = position;
@@ -85,6 +85,7 @@ void DragTracker::onCursor(const glm::dvec2& position) {
     }
     const glm::dvec2 delta = position - anchor_;
     anchor_ = position;
+    travel_ += glm::length(delta);
     switch (target_) {
         case DragTarget::Look: deltas_.look += delta; break;
         case DragTarget::Orbit: deltas_.orbit += delta; break;
@@ -97,8 +98,15 @@ void DragTracker::onPress(DragTarget target) {
     target_ = target;
     anchor_ = cursor_;
     reanchor_ = true;
+    pressed_ = true;
+    travel_ = 0.0;
 }
 
-void DragTracker::onRelease() { target_ = DragTarget::None; }
+bool DragTracker::onRelease() {
+    const bool click = pressed_ && travel_ < kClickSlop;
+    target_ = DragTarget::None;
+    pressed_ = false;
+    return click;
+}
 
 }  // namespace shadowlab::app

@@ -93,7 +93,10 @@ class DragTracker {
 public:
     void onCursor(const glm::dvec2& position);
     void onPress(DragTarget target);
-    void onRelease();
+    // True when the press was a click: the cursor moved less than kClickSlop pixels in all between
+    // press and release (the click that enlarges an inset, not a drag that turns the observer).
+    bool onRelease();
+    static constexpr double kClickSlop = 4.0;
     DragTarget target() const { return target_; }
     const glm::dvec2& cursor() const { return cursor_; }
     // The movement since the last call.
@@ -105,6 +108,8 @@ private:
     DragDeltas deltas_;
     DragTarget target_ = DragTarget::None;
     bool reanchor_ = false;
+    bool pressed_ = false;  // a button is down (also with DragTarget::None: over a panel)
+    double travel_ = 0.0;   // cursor path length since the press
 };
 
 }  // namespace shadowlab::app

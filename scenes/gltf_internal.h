@@ -74,6 +74,20 @@ std::vector<char> baseColorImages(const json& root);
 bool captureImage(tinygltf::Image* image, int index, std::string* err, std::string* warn, int reqWidth,
                   int reqHeight, const unsigned char* bytes, int size, void* user);
 
+// ---------------------------------------------------------------- progress (LoadOptions::progress)
+// Where each step ends, as a fraction of the whole load: Sponza's times (glTF, 1.22 s on this
+// 2-core machine, LoaderProgress test: read and JSON 0.005 s, tinygltf's parse with the buffers
+// 0.20 s, meshes ~0.1 s, its 21 base colour textures 0.9 s). A scene without textures to decode
+// gives the meshes the textures' span (meshesWithoutTextures).
+struct LoadProgress {
+    double read = 0.01, json = 0.02, parsed = 0.18, nodes = 0.19, meshes = 0.28, textures = 0.99;
+    double meshesWithoutTextures = 0.99;
+};
+inline constexpr LoadProgress kLoadProgress{};
+inline void reportProgress(const LoadOptions& options, double fraction) {
+    if (options.progress) options.progress(fraction);
+}
+
 // ---------------------------------------------------------------- the model -> Scene conversion
 class Converter {
 public:

@@ -21,6 +21,7 @@ Converter::Converter(const tinygltf::Model& model, const json& rootJson, const I
 void Converter::convert() {
     if (!m.skins.empty()) warn(std::to_string(m.skins.size()) + " skin(s) ignored: meshes are drawn in their bind pose");
     convertNodes();
+    reportProgress(options, kLoadProgress.nodes);
     checkGeometryBudget();
     checkInstanceBudget();
     convertMaterials();
@@ -65,7 +66,9 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
         if (first == bytes.end() || *first != '{') fail("not a glTF file: neither JSON nor binary glTF (GLB)");
         jsonText.assign(bytes.begin(), bytes.end());
     }
+    reportProgress(options, kLoadProgress.read);
     const json root = parseJson(jsonText, options.limits);
+    reportProgress(options, kLoadProgress.json);
     checkAssetAndExtensions(root, warnings);
     checkDeclaredCounts(root, options.limits);
     checkExternalFiles(root, baseDir);
@@ -84,6 +87,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     if (!parsed) fail(err.empty() ? std::string("tinygltf could not parse it") : cleanMessage(err).substr(0, 400));
     bytes = {};
     jsonText = {};
+    reportProgress(options, kLoadProgress.parsed);
     {
         std::istringstream lines(warn);
         std::string line;
@@ -100,6 +104,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     if (scene.triangleCount() == 0) warnings.push_back("the scene has no triangles to draw");
     finiteFarPlanes(scene);
     addDefaultsIfMissing(scene);
+    reportProgress(options, 1.0);
     return scene;
 }
 

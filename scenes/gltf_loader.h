@@ -5,6 +5,7 @@
 #include "scenes/scene.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <cstdint>
 #include <string>
@@ -39,6 +40,11 @@ enum class TextureDecoding { Decode, Deferred, HeadersOnly };
 struct LoadOptions {
     LoadLimits limits;
     TextureDecoding textures = TextureDecoding::Decode;
+    // The fraction done (0 .. 1, never decreasing), after each step: the file read, the JSON,
+    // tinygltf's parse, each mesh, each decoded texture (kLoadProgress in gltf_internal.h weighs
+    // the steps). Called on the loading thread only, never concurrently; a viewer on another
+    // thread should keep the value in an atomic. Empty: no calls.
+    std::function<void(double)> progress;
 };
 
 struct LoadResult {

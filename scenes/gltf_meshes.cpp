@@ -287,6 +287,10 @@ void Converter::convertMeshes() {
                 mesh.primitives.push_back(std::move(*p));
         }
         scene.meshes.push_back(std::move(mesh));
+        const double end = slotImages.empty() || options.textures != TextureDecoding::Decode
+                               ? kLoadProgress.meshesWithoutTextures
+                               : kLoadProgress.meshes;
+        reportProgress(options, kLoadProgress.nodes + (end - kLoadProgress.nodes) * double(i + 1) / double(m.meshes.size()));
     }
 }
 

@@ -169,7 +169,14 @@ void Converter::decodeTextures() {
     const std::size_t jobs = slotImages.size();
     const std::size_t threads = std::min<std::size_t>(jobs, std::max(1u, std::min(8u, std::thread::hardware_concurrency())));
     std::vector<std::string> errors(jobs);
-    std::atomic<std::size_t> next{0};
+    std::atomic<std::size_t> next{0}, decoded{0};
+    // Only this (the loading) thread reports, after each of its own images: the callback is never
+    // called concurrently.
+    auto report = [&] {
+        reportProgress(options, kLoadProgress.meshes + (kLoadProgress.textures - kLoadProgress.meshes) *
+                                                           double(decoded.load()) / double(jobs));
+    };
+    const std::thread::id loadingThread = std::this_thread::get_id();
     auto work = [&] {
         for (std::size_t i = next++; i < jobs; i = next++) {
             std::string reason;
@@ -179,12 +186,15 @@ void Converter::decodeTextures() {
             } catch (const std::exception& e) {
                 errors[i] = imageLabel(m, slotImages[i]) + ": " + e.what();
             }
+            ++decoded;
+            if (std::this_thread::get_id() == loadingThread) report();
         }
     };
     std::vector<std::thread> pool;
     for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
+    report();
     for (const std::string& e : errors)
         if (!e.empty()) fail(e);
 }

@@ -11,6 +11,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace shadowlab::ui {
 
 namespace {
@@ -35,23 +37,62 @@ ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
     ImGui::SameLine();
     ImGui::Checkbox("with panels", &ui.screenshotPanels);
     if (ImGui::TreeNode("keys and mouse")) {
-        ImGui::TextUnformatted(
-            "left drag: look\n"
-            "right drag: orbit the scene centre\n"
-            "wheel: dolly towards the scene centre\n"
-            "W A S D Q E: fly (shift: 4x)\n"
-            "Home / F: frame the scene\n"
-            "R: back to the scene's camera\n"
-            "1 2 3 4: SSM, SSM unfocused, PSM, LiSPSM\n"
-            "space: play / pause\n"
-            "F1: hide panels     F12: screenshot\n"
-            "drag / wheel over the observer inset:\n"
-            "  move the observer\n"
-            "drop a .json / .png: apply its view\n"
-            "drop a .gltf / .glb: open it");
+        ImGui::TextUnformatted(kKeysHelp);
         ImGui::TreePop();
     }
     return r;
+}
+
+const char* const kKeysHelp =
+    "left drag: look\n"
+    "right drag: orbit the scene centre\n"
+    "wheel: dolly towards the scene centre\n"
+    "W A S D Q E: fly (shift: 4x)\n"
+    "Home / F: frame the scene\n"
+    "R: back to the scene's camera\n"
+    "1 2 3 4: SSM, SSM unfocused, PSM, LiSPSM\n"
+    "space: play / pause\n"
+    "F1: hide panels     F12: screenshot\n"
+    "click an inset: enlarge it / back\n"
+    "drag / wheel over the observer inset:\n"
+    "  move the observer\n"
+    "arrow of this window's title: fold it\n"
+    "drop a .json / .png: apply its view\n"
+    "drop a .gltf / .glb: open it";
+
+namespace {
+// `label`, or its longest head + "..." that is at most `room` wide; cut at UTF-8 character
+// boundaries (glTF names are UTF-8).
+std::string shortened(const std::string& label, float room, const std::function<float(const std::string&)>& textWidth) {
+    if (textWidth(label) <= room) return label;
+    std::string head = label;
+    while (!head.empty() && textWidth(head + "...") > room) {
+        while (!head.empty() && (static_cast<unsigned char>(head.back()) & 0xC0) == 0x80) head.pop_back();
+        if (!head.empty()) head.pop_back();
+    }
+    return head + "...";
+}
+}  // namespace
+
+std::vector<FlowItem> flowLayout(const std::vector<std::string>& labels, float lineWidth, float padding,
+                                 float spacing, const std::function<float(const std::string&)>& textWidth) {
+    std::vector<FlowItem> items;
+    int row = 0;
+    float x = 0.0f;
+    for (const std::string& label : labels) {
+        FlowItem item;
+        item.shown = shortened(label, lineWidth - padding, textWidth);
+        item.width = std::min(lineWidth, textWidth(item.shown) + padding);
+        if (x > 0.0f && x + item.width > lineWidth) {
+            ++row;
+            x = 0.0f;
+        }
+        item.row = row;
+        item.x = x;
+        x += item.width + spacing;
+        items.push_back(std::move(item));
+    }
+    return items;
 }
 
 float controlWindowWidth() { return kControlWidth; }
@@ -60,8 +101,10 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
     ControlResult result;
     ImGui::SetNextWindowPos(ImVec2(width - kControlWidth, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kControlWidth, height), ImGuiCond_Always);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    // Collapsible (the title bar's arrow): folded, the 3D area takes the window's full width.
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
     if (!ImGui::Begin("shadowlab controls", nullptr, flags)) {
+        result.collapsed = ImGui::IsWindowCollapsed();
         ImGui::End();
         return result;
     }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace shadowlab::ui {
@@ -52,9 +53,10 @@ void drawMessageToast(ViewerStatus& status, const LoadingInfo& loading, float x0
     if (loading.active) {
         ImGui::Text("%s %s  (%.1f s)", loading.uploading ? "uploading" : "loading", loading.file.c_str(),
                     loading.seconds);
-        // The loader reports no fraction: a bar that sweeps once a second says it is alive.
-        const float sweep = loading.uploading ? 1.0f : float(std::fmod(loading.seconds, 1.0));
-        ImGui::ProgressBar(sweep, ImVec2(-1.0f, 0.0f), "");
+        const float fraction = loading.uploading ? 1.0f : float(std::clamp(loading.fraction, 0.0, 1.0));
+        char label[32];
+        std::snprintf(label, sizeof label, "%.0f %%", 100.0 * fraction);
+        ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), label);
     }
     if (!status.lastError.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));

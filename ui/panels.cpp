@@ -400,16 +400,21 @@ bool drawCameraPanel(Settings& s, const Scene& scene) {
         ImGui::TextUnformatted("presets (glTF cameras):");
         ImGui::SameLine();
         helpMarker("Jump to a camera of the glTF file (its position, direction, fov, near and far; roll is dropped).");
-        for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
-            const Camera& cam = scene.cameras[i];
-            const std::string label =
-                (cam.name.empty() ? "camera " + std::to_string(i) : cam.name) + "##cam" + std::to_string(i);
-            if (i % 2 != 0) ImGui::SameLine();
-            if (ImGui::Button(label.c_str(),
-                              ImVec2(ImGui::GetContentRegionAvail().x * (i % 2 == 0 ? 0.5f : 1.0f) - 4.0f, 0))) {
-                c = cameraFromScene(cam, c);
+        std::vector<std::string> names;
+        for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+            names.push_back(scene.cameras[i].name.empty() ? "camera " + std::to_string(i) : scene.cameras[i].name);
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const std::vector<FlowItem> flow =
+            flowLayout(names, ImGui::GetContentRegionAvail().x, 2.0f * style.FramePadding.x, style.ItemSpacing.x,
+                       [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
+        for (std::size_t i = 0; i < flow.size(); ++i) {
+            if (i > 0 && flow[i].row == flow[i - 1].row) ImGui::SameLine();
+            const std::string label = flow[i].shown + "##cam" + std::to_string(i);
+            if (ImGui::Button(label.c_str(), ImVec2(flow[i].width, 0))) {
+                c = cameraFromScene(scene.cameras[i], c);
                 changed = true;
             }
+            if (flow[i].shown != names[i] && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", names[i].c_str());
         }
     }
     return changed;

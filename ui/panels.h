@@ -7,6 +7,7 @@
 #include "scenes/scene.h"
 #include "settings/settings.h"
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -94,6 +95,7 @@ struct ControlResult {
     ViewStateRequests requests;
     AccuracyRequest accuracy;  // "measure this view"
     std::string openFile;  // File > Open, a recent file, or "load view": the viewer opens it by its kind
+    bool collapsed = false;  // folded to its title bar (its arrow): the 3D area may take the full width
 };
 // The control window (right edge of a `width` x `height` framebuffer): every panel above as a
 // collapsing section.
@@ -101,6 +103,21 @@ ControlResult drawControlWindow(Settings& settings, const ControlContext& contex
 
 // Width of the control window, so the viewer keeps its 3D views and insets out from under it.
 float controlWindowWidth();
+
+// The "keys and mouse" help of the View state panel, one control per line.
+extern const char* const kKeysHelp;
+
+// Buttons as wide as their labels, in rows that wrap at `lineWidth` (item 10 of issue 14: fixed
+// half-width buttons cut long camera names). A label wider than a whole line is shortened with
+// "..." to fit. Pure layout, for the camera presets and their test.
+struct FlowItem {
+    int row = 0;
+    float x = 0.0f, width = 0.0f;  // from the line's start
+    std::string shown;             // the label, or its shortened form
+};
+// `textWidth` measures a string; `padding`: a button's width beyond its text; `spacing` between buttons.
+std::vector<FlowItem> flowLayout(const std::vector<std::string>& labels, float lineWidth, float padding,
+                                 float spacing, const std::function<float(const std::string&)>& textWidth);
 
 // A caption drawn over the 3D image (compare views, insets), behind the ImGui windows.
 struct Caption {

@@ -307,3 +307,50 @@ TEST(LoaderSamples, SponzaHasWhatTheFileHolds) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// LoadOptions::progress (the viewer's progress bar): fractions in [0, 1], never decreasing, one
+// per mesh and per decoded texture at least, ending at exactly 1; printed with their times, the
+// measurement behind the step weights of gltf_internal.h.
+TEST(LoaderProgress, SponzaReportsAFractionPerStepEndingAtOne) {
+    std::vector<std::pair<double, double>> reports;  // fraction, seconds since the start
+    const auto start = std::chrono::steady_clock::now();
+    LoadOptions options;
+    options.progress = [&](double fraction) {
+        reports.emplace_back(fraction, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    };
+    const LoadResult r = loadScene(kScenes + "/Sponza/Sponza.gltf", options);
+    ASSERT_TRUE(r.ok()) << r.error;
+    ASSERT_FALSE(reports.empty());
+    EXPECT_GE(reports.size(), r.scene->meshes.size() + 4);  // meshes + read, JSON, parse, nodes
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+        EXPECT_GE(reports[i].first, 0.0);
+        EXPECT_LE(reports[i].first, 1.0);
+        if (i > 0) {
+            EXPECT_GE(reports[i].first, reports[i - 1].first) << i;
+        }
+    }
+    EXPECT_EQ(reports.back().first, 1.0);
+    double last = -1.0;
+    for (const auto& [fraction, seconds] : reports)
+        if (fraction - last >= 0.02 || fraction == 1.0) {
+            std::printf("progress %.3f at %.3f s\n", fraction, seconds);
+            last = fraction;
+        }
+}
+
+TEST(LoaderProgress, AFailedLoadNeverReportsOne) {
+    std::vector<double> reports;
+    LoadOptions options;
+    options.progress = [&](double fraction) { reports.push_back(fraction); };
+    const LoadResult r = loadScene(kScenes + "/does-not-exist.glb", options);
+    EXPECT_FALSE(r.ok());
+    for (double f : reports) EXPECT_LT(f, 1.0);
+    // A load without a callback is the same load.
+    EXPECT_TRUE(loadScene(kScenes + "/Box/glTF-Binary/Box.glb").ok());
+}
+
+}  // namespace
+}  // namespace shadowlab

@@ -106,5 +106,24 @@ TEST(DragTracker, AWholeDragWithinOneFrameIsKeptForThatFrame) {
     EXPECT_EQ(d.look, glm::dvec2(0.0));
 }
 
+TEST(DragTracker, AReleaseIsAClickOnlyWhenTheCursorStayedPut) {
+    DragTracker drag;
+    drag.onCursor({200.0, 200.0});
+    drag.onPress(DragTarget::Observer);
+    drag.onCursor({200.0, 200.0});  // the re-anchoring report
+    drag.onCursor({201.0, 202.0});  // hand jitter: under the slop
+    EXPECT_TRUE(drag.onRelease());
+
+    drag.onPress(DragTarget::Observer);
+    drag.onCursor({201.0, 202.0});
+    drag.onCursor({230.0, 202.0});  // a drag that turns the observer
+    drag.onCursor({201.0, 202.0});  // and back: the path counts, not the end point
+    EXPECT_FALSE(drag.onRelease());
+    EXPECT_FALSE(drag.onRelease());  // a release without a press is no click
+
+    drag.onPress(DragTarget::None);  // over a panel: still a click (the viewer decides what is under it)
+    EXPECT_TRUE(drag.onRelease());
+}
+
 }  // namespace
 }  // namespace shadowlab::app
