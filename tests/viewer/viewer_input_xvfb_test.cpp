@@ -159,5 +159,70 @@ TEST(ViewerInputUnderXvfb, AbDifferenceOfIdenticalSettingsIsBlackAndRenderCompar
     EXPECT_EQ(written.width, 3 * 200);  // A | B | difference
 }
 
+// The F12 screenshot of a driven run (the one shadowlab-ssm-*.png in the run's directory).
+RgbaImage f12Shot(const std::string& name, const std::string& steps) {
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().rfind("shadowlab-ssm-", 0) == 0) fs::remove(entry.path());
+    const std::string view = R"({"method": "ssm", "animation": {"playing": false, "time": 0.0},
+        "overlays": {"shadowMapInset": true, "lightViewInset": false, "observerInset": false}})";
+    drive(name, view, steps + " key:F12 sleep:1500", "--no-ui");
+    RgbaImage image;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().rfind("shadowlab-ssm-", 0) == 0 && entry.path().extension() == ".png") {
+            std::string error;
+            EXPECT_TRUE(readPng(entry.path(), image, error)) << error;
+        }
+    EXPECT_EQ(image.width, 960) << name << ": F12 wrote no shadowlab-ssm-*.png";
+    return image;
+}
+
+// Share of pixels in [x0, x1) x [y0, y1) that differ by more than a rounding step.
+double differingShare(const RgbaImage& a, const RgbaImage& b, int x0, int y0, int x1, int y1) {
+    long differing = 0, all = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++all) {
+            const glm::ivec4 p(a.at(x, y)), q(b.at(x, y));
+            differing += std::abs(p.r - q.r) > 6 || std::abs(p.g - q.g) > 6 || std::abs(p.b - q.b) > 6;
+        }
+    return all > 0 ? double(differing) / double(all) : 0.0;
+}
+
+TEST(ViewerInputUnderXvfb, AClickOnAnInsetEnlargesItAndASecondClickShrinksIt) {
+    // 960 x 540 without panels: the shadow-map inset is 180 px at (12, 348); enlarged, 516 px at
+    // (12, 12). A click (no movement between press and release) toggles it and moves no camera.
+    const RgbaImage plain = f12Shot("inset-plain", "move:100:440 sleep:300");
+    const RgbaImage big = f12Shot("inset-big", "move:100:440 sleep:300 press:1 release:1 sleep:500");
+    const RgbaImage back = f12Shot("inset-back", "move:100:440 sleep:300 press:1 release:1 sleep:500 press:1 release:1 sleep:500");
+    ASSERT_TRUE(plain.width == 960 && big.width == 960 && back.width == 960);
+    EXPECT_GT(differingShare(plain, big, 200, 30, 500, 330), 0.5);   // inside the enlarged inset only
+    EXPECT_LT(differingShare(plain, big, 560, 0, 960, 540), 0.01);   // right of it: the same view
+    EXPECT_LT(differingShare(plain, back, 0, 0, 960, 540), 0.01);    // a second click shrinks it back
+}
+
+TEST(ViewerInputUnderXvfb, LimitsAndSceneNoticesReachTheViewer) {
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    const fs::path log = dir / "limits.log", shot = dir / "limits.png";
+    // An unknown limit is refused before a window opens (no display needed for that).
+    const std::string bad = quoted(SHADOWLAB_EXE) + " " + quoted(PLANE_BOX_SCENE) + " --limit bogus=1 > " +
+                            quoted(log) + " 2>&1";
+    EXPECT_NE(std::system(bad.c_str()), 0);
+    EXPECT_NE(readFile(log).find("unknown load limit 'bogus'"), std::string::npos) << readFile(log);
+    // A limit the scene is over: refused with the limit's name, the window stays open.
+    const std::string over = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+                             " " + quoted(PLANE_BOX_SCENE) + " --limit vertices=3 --frames 2 --width 320 --height 200" +
+                             " --no-ui --screenshot " + quoted(shot) + " > " + quoted(log) + " 2>&1";
+    EXPECT_EQ(std::system(over.c_str()), 0) << readFile(log);
+    EXPECT_NE(readFile(log).find("vertices"), std::string::npos) << readFile(log);
+    // sceneNotices: a scene light beyond the scene's lights is told, as `render` tells it.
+    const std::string notice = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+                               " " + quoted(PLANE_BOX_SCENE) + " --set light.source=scene --set light.sceneLight=5" +
+                               " --frames 2 --width 320 --height 200 --no-ui > " + quoted(log) + " 2>&1";
+    EXPECT_EQ(std::system(notice.c_str()), 0) << readFile(log);
+    EXPECT_NE(readFile(log).find("note: light.sceneLight = 5"), std::string::npos) << readFile(log);
+}
+
 }  // namespace
 }  // namespace shadowlab
