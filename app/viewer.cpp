@@ -19,6 +19,7 @@
 #include "scenes/animation.h"
 #include "viewer_frame.h"
 #include "viewer_open.h"
+#include "widgets.h"
 #include "viewer_window.h"
 
 #include <backends/imgui_impl_glfw.h>
@@ -296,6 +297,7 @@ void runViewer(const ViewerOptions& options) {
     }
     state.status.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     startSceneLoad(state, sceneFile);
+    warmUpTextureUploads();  // while the worker parses
 
     using Clock = std::chrono::steady_clock;
     auto last = Clock::now();
@@ -307,6 +309,7 @@ void runViewer(const ViewerOptions& options) {
         // frame; a software rasteriser would spend a whole core on it.
         const bool continuous = options.frames > 0 || animating(state) || state.fly.anyHeld() ||
                                 state.drag.target() != DragTarget::None || state.uploadNext ||
+                                state.texturesPending > 0 ||
                                 renderer->readbackPending();  // the visible-depth result arrives next frame
         if (continuous || framesOwed > 0) glfwPollEvents();
         else if (state.load) glfwWaitEventsTimeout(0.1);  // the progress bar moves
@@ -323,7 +326,21 @@ void runViewer(const ViewerOptions& options) {
 
         if (state.uploadNext) {
             finishSceneLoad(state, *renderer, options.overrides);
+            state.texturesPending = state.texturesTotal;
             framesOwed = kSettleFrames;
+        } else if (state.texturesPending > 0) {
+            // A texture or two per frame (one 1024^2 with mipmaps: ~14 ms on llvmpipe).
+            constexpr double kTextureBudgetMs = 20.0;
+            const auto start = Clock::now();
+            state.texturesPending = renderer->streamTextures(kTextureBudgetMs);
+            state.textureFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+            if (state.texturesPending == 0) {
+                framesOwed = kSettleFrames;
+                const auto& ms = state.textureFrames;
+                std::cerr << "shadowlab: textures uploaded over " << ms.size() << " frames, at most "
+                          << ui::formatNumber(*std::max_element(ms.begin(), ms.end()), 3) << " ms per frame\n";
+                state.textureFrames.clear();
+            }
         }
         state.uploadNext = state.load && state.load->done();
         for (const std::string& file : std::exchange(events.droppedFiles, {})) openFile(state, file);
@@ -377,6 +394,9 @@ void runViewer(const ViewerOptions& options) {
         ui::LoadingInfo loading;
         if (state.load)
             loading = {true, state.load->file(), state.load->secondsRunning(), state.uploadNext, state.load->progress()};
+        else if (state.texturesPending > 0)
+            loading = {true, state.status.sceneName, 0.0, false,
+                       1.0 - double(state.texturesPending) / double(std::max<std::size_t>(1, state.texturesTotal)), true};
         ui::drawMessageToast(state.status, loading, 0.0f, float(layout.viewWidth));
         // F12 without panels: the rendered 3D area as it is now, before any ImGui drawing.
         std::optional<RgbaImage> bareShot;

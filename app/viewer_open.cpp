@@ -4,7 +4,10 @@
 
 #include <GLFW/glfw3.h>
 
+#include "widgets.h"
+
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <utility>
 
@@ -100,6 +103,7 @@ void openFile(ViewerState& state, const std::string& file) {
 
 void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverrides& overrides) {
     const std::string file = state.load->file();
+    const double parseSeconds = state.load->secondsRunning();
     LoadResult loaded = state.load->take();
     state.load.reset();
     for (const std::string& w : loaded.warnings) std::cerr << "shadowlab: warning: " << w << "\n";
@@ -127,7 +131,14 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
     // The pose at the view's time, so a loaded view shows the frame it was saved at.
     animateScene(scene, state.settings.animation.time);
     state.posedTime = state.settings.animation.time;
-    renderer.setScene(scene);
+    const auto uploadStart = std::chrono::steady_clock::now();
+    renderer.setScene(scene, true);  // geometry now, the textures over the next frames
+    const double uploadMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uploadStart).count();
+    std::cerr << "shadowlab: opened " << file << " (loaded in " << ui::formatNumber(parseSeconds, 3)
+              << " s off the render thread, GPU upload " << ui::formatNumber(uploadMs, 3) << " ms, "
+              << scene.textures.size() << " textures to follow)\n";
+    state.texturesTotal = scene.textures.size();
     forgetScene(state.accuracy);
     state.status.sceneName = file;
     state.status.sceneTriangles = scene.triangleCount();

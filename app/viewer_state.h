@@ -49,7 +49,10 @@ struct ViewerState {
     std::optional<GroundPlaneUndo> groundPlane;  // added to the scene (display.groundPlane)
     ViewerAccuracy accuracy;  // the accuracy panel (app/viewer_accuracy.h)
     bool initialLoad = true;  // the scene of the command line (its settings take the overrides)
-    bool uploadNext = false;  // a finished load is uploaded next frame, after its "uploading" frame
+    bool uploadNext = false;
+    std::size_t texturesTotal = 0;    // of the scene being shown
+    std::size_t texturesPending = 0;  // still streaming in (Renderer::streamTextures)
+    std::vector<double> textureFrames;  // ms of each frame's texture upload (told when done)  // a finished load is uploaded next frame, after its "uploading" frame
 };
 
 }  // namespace shadowlab::app

@@ -1,5 +1,10 @@
 #include "viewer_window.h"
 
+#include "gl/gl_objects.h"
+
+#include <cstdint>
+#include <vector>
+
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
@@ -85,6 +90,16 @@ ImGuiSession::~ImGuiSession() {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
+}
+
+void warmUpTextureUploads() {
+    constexpr int kSide = 64;
+    const std::vector<std::uint8_t> pixels(std::size_t(kSide) * kSide * 4, 128);
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.id(), 7, GL_SRGB8_ALPHA8, kSide, kSide);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    glGenerateTextureMipmap(texture.id());
+    glFinish();
 }
 
 }  // namespace shadowlab::app

@@ -37,6 +37,11 @@ struct WindowEvents {
 // Installs the callbacks (before ImGui's, which chain to them). `events` must outlive the window.
 void installWindowCallbacks(GLFWwindow* window, WindowEvents& events);
 
+// Uploads and mipmaps one small sRGB texture and waits for it, while the first scene is still
+// parsing: llvmpipe spends ~290 ms on its first mipmapped sRGB upload (then 10-40 ms per 1024^2
+// Sponza texture), which would otherwise freeze the first frame of streamed textures.
+void warmUpTextureUploads();
+
 struct ImGuiSession {
     explicit ImGuiSession(GLFWwindow* window);
     ~ImGuiSession();

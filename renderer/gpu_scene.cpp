@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <chrono>
 #include <cmath>
 
 namespace shadowlab {
@@ -44,7 +45,40 @@ GLint validWrap(int wrap) {
 
 }  // namespace
 
-GpuScene::GpuScene(const Scene& scene) {
+gl::Texture GpuScene::uploadTexture(const Texture& t) {
+    gl::Texture tex = gl::createTexture(GL_TEXTURE_2D);
+    if (t.width > 0 && t.height > 0 && t.rgba8.size() >= std::size_t(t.width) * t.height * 4) {
+        const int levels = 1 + int(std::floor(std::log2(double(std::max(t.width, t.height)))));
+        glTextureStorage2D(tex.id(), levels, GL_SRGB8_ALPHA8, t.width, t.height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTextureSubImage2D(tex.id(), 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba8.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glGenerateTextureMipmap(tex.id());
+    } else {  // an unusable image (or one still to come): 1x1 white, so the material's factor shows
+        const std::uint8_t white[4] = {255, 255, 255, 255};
+        glTextureStorage2D(tex.id(), 1, GL_SRGB8_ALPHA8, 1, 1);
+        glTextureSubImage2D(tex.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    }
+    return tex;
+}
+
+bool GpuScene::uploadPendingTextures(const Scene& scene, double budgetMs) {
+    if (pendingTextures_.empty()) return false;
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t done = 0;
+    while (done < pendingTextures_.size()) {
+        const std::size_t index = pendingTextures_[done++];
+        if (index < scene.textures.size() && index < textures_.size())
+            textures_[index] = uploadTexture(scene.textures[index]);
+        if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= budgetMs)
+            break;
+    }
+    pendingTextures_.erase(pendingTextures_.begin(), pendingTextures_.begin() + std::ptrdiff_t(done));
+    uploadMaterials(scene);  // the materials carry the texture ids
+    return true;
+}
+
+GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     meshes_.resize(scene.meshes.size());
@@ -112,21 +146,12 @@ GpuScene::GpuScene(const Scene& scene) {
     glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(vao, 3, 1);
 
-    for (const Texture& t : scene.textures) {
-        gl::Texture tex = gl::createTexture(GL_TEXTURE_2D);
-        if (t.width > 0 && t.height > 0 && t.rgba8.size() >= std::size_t(t.width) * t.height * 4) {
-            const int levels = 1 + int(std::floor(std::log2(double(std::max(t.width, t.height)))));
-            glTextureStorage2D(tex.id(), levels, GL_SRGB8_ALPHA8, t.width, t.height);
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTextureSubImage2D(tex.id(), 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba8.data());
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-            glGenerateTextureMipmap(tex.id());
-        } else {  // an unusable image: 1x1 white, so the material's factor still shows
-            const std::uint8_t white[4] = {255, 255, 255, 255};
-            glTextureStorage2D(tex.id(), 1, GL_SRGB8_ALPHA8, 1, 1);
-            glTextureSubImage2D(tex.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
-        }
-        textures_.push_back(std::move(tex));
+    static const Texture kPlaceholder{};
+    for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+        const Texture& t = scene.textures[i];
+        const bool later = deferTextures && !t.rgba8.empty();
+        if (later) pendingTextures_.push_back(i);
+        textures_.push_back(uploadTexture(later ? kPlaceholder : t));
         gl::SamplerObject sampler = gl::createSampler();
         glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, t.sampler.magFilter == 9728 ? GL_NEAREST : GL_LINEAR);
         glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER,

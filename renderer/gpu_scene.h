@@ -51,7 +51,15 @@ struct DrawGroup {
 
 class GpuScene {
 public:
-    explicit GpuScene(const Scene& scene);
+    // `deferTextures`: images start as 1x1 white (the material's factor shows) and are uploaded by
+    // uploadPendingTextures, a few per frame, so opening Sponza does not freeze the window for the
+    // whole upload (294 ms on llvmpipe, of which the textures are most).
+    explicit GpuScene(const Scene& scene, bool deferTextures = false);
+
+    // Uploads deferred textures (pixels and mipmaps) until `budgetMs` has passed, at least one;
+    // `scene` must be the one constructed from, its pixels unchanged. True when one was uploaded.
+    bool uploadPendingTextures(const Scene& scene, double budgetMs);
+    std::size_t pendingTextures() const { return pendingTextures_.size(); }
 
     // Re-uploads the instance matrices after the node transforms changed (animation).
     void updateInstances(const Scene& scene);
@@ -95,6 +103,9 @@ private:
     // later (streamed decoding) must call it again, and the renderer must count it as a scene
     // change: alpha-masked textures shape the shadow map (ShadowMapKey::sceneVersion).
     void uploadMaterials(const Scene& scene);
+    // The texture of `t` with its pixels and mipmaps (1x1 white for an unusable image).
+    static gl::Texture uploadTexture(const Texture& t);
+    std::vector<std::size_t> pendingTextures_;  // Scene::textures indices still 1x1 white
 
     gl::VertexArray vao_;
     gl::Buffer vertices_;

@@ -78,12 +78,18 @@ std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     return r;
 }
 
-void Renderer::setScene(const Scene& scene) {
-    gpuScene_ = std::make_unique<GpuScene>(scene);
+void Renderer::setScene(const Scene& scene, bool streamTextures) {
+    gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures);
     culler_.setScene(scene);
     scene_ = &scene;
     ++sceneLoads_;
     ++sceneVersion_;
+}
+
+std::size_t Renderer::streamTextures(double budgetMs) {
+    if (!gpuScene_ || !scene_) return 0;
+    if (gpuScene_->uploadPendingTextures(*scene_, budgetMs)) ++sceneVersion_;
+    return gpuScene_->pendingTextures();
 }
 
 void Renderer::updateInstances(const Scene& scene) {

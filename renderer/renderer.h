@@ -37,8 +37,12 @@ public:
     // nullptr and a message when the shaders do not build on this GL.
     static std::unique_ptr<Renderer> create(std::string& error);
 
-    // Uploads the scene (geometry and textures once).
-    void setScene(const Scene& scene);
+    // Uploads the scene (geometry and textures once). `streamTextures`: the textures follow over
+    // the next frames through streamTextures() (the viewer; headless renders upload them at once).
+    void setScene(const Scene& scene, bool streamTextures = false);
+    // Uploads deferred textures for about `budgetMs` (at least one); a scene change for the map
+    // reuse (masked textures shape the shadow map). The number still to come.
+    std::size_t streamTextures(double budgetMs);
     // After node transforms changed (animation): new instance matrices.
     void updateInstances(const Scene& scene);
 

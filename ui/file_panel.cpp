@@ -51,9 +51,13 @@ void drawMessageToast(ViewerStatus& status, const LoadingInfo& loading, float x0
         return;
     }
     if (loading.active) {
-        ImGui::Text("%s %s  (%.1f s)", loading.uploading ? "uploading" : "loading", loading.file.c_str(),
-                    loading.seconds);
-        const float fraction = loading.uploading ? 1.0f : float(std::clamp(loading.fraction, 0.0, 1.0));
+        if (loading.textures)
+            ImGui::Text("uploading the textures of %s", loading.file.c_str());
+        else
+            ImGui::Text("%s %s  (%.1f s)", loading.uploading ? "uploading" : "loading", loading.file.c_str(),
+                        loading.seconds);
+        const float fraction =
+            loading.uploading && !loading.textures ? 1.0f : float(std::clamp(loading.fraction, 0.0, 1.0));
         char label[32];
         std::snprintf(label, sizeof label, "%.0f %%", 100.0 * fraction);
         ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), label);

@@ -25,7 +25,8 @@ struct LoadingInfo {
     std::string file;
     double seconds = 0.0;
     bool uploading = false;  // parsed; the GPU upload runs this frame
-    double fraction = 0.0;   // the loader's progress, 0 .. 1
+    double fraction = 0.0;   // the loader's progress, 0 .. 1 (or of the textures)
+    bool textures = false;   // the scene shows; its textures stream in (fraction: uploaded share)
 };
 
 // A window at the top of the 3D area (x0 .. x0 + width) while there is an error, a notice or a

@@ -42,6 +42,22 @@ TEST_F(SceneFileRender, TexturedBoxShowsItsTextureInTheMiddleAndSkyAtTheCorner) 
     EXPECT_GE(colours.size(), 3u);
 }
 
+// The viewer streams textures after the geometry (Renderer::setScene(scene, true)): until they
+// arrive the materials show their factor over white, and once all are in the image is the one a
+// whole upload gives.
+TEST_F(SceneFileRender, StreamedTexturesEndInTheImageOfAWholeUpload) {
+    const Scene scene = load("BoxTextured/glTF-Binary/BoxTextured.glb");
+    ASSERT_EQ(scene.textures.size(), 1u);
+    const Settings s = opening(scene);
+    const RgbaImage whole = render(scene, s);
+    renderer_->setScene(scene, true);
+    const RgbaImage before = render(scene, s);  // same scene object: render() keeps this upload
+    EXPECT_NE(before.pixels, whole.pixels);     // the box is untextured for now
+    EXPECT_EQ(renderer_->streamTextures(0.0), 0u);  // one texture, at least one per call
+    EXPECT_EQ(renderer_->streamTextures(0.0), 0u);  // nothing left: nothing happens
+    EXPECT_EQ(render(scene, s).pixels, whole.pixels);
+}
+
 TEST_F(SceneFileRender, SameFileInThreeContainersRendersTheSame) {
     const Scene gltf = load("Box/glTF/Box.gltf");
     const Scene glb = load("Box/glTF-Binary/Box.glb");
