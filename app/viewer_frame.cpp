@@ -53,8 +53,10 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
         bool on;
         InsetKind kind;
         int aspectNum, aspectDen;  // width : height
+        int squares = 1;           // the shadow map with cascades: one square per layer, side by side
     };
-    std::vector<Slot> slots = {{&l.shadowMapInset, settings.overlays.shadowMapInset, InsetKind::ShadowMap, 1, 1},
+    const int layers = settings.csm.enabled ? std::clamp(settings.csm.splits, 1, 4) : 1;
+    std::vector<Slot> slots = {{&l.shadowMapInset, settings.overlays.shadowMapInset, InsetKind::ShadowMap, 1, 1, layers},
                                {&l.lightViewInset, settings.overlays.lightViewInset, InsetKind::LightView, 1, 1},
                                {&l.observerInset, settings.overlays.observerInset, InsetKind::Observer, 4, 3}};
     // The enlarged inset first, at the left edge (at 4:3 and 3/4 of the width it still fits).
@@ -62,8 +64,13 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
     int x = margin;
     for (const Slot& slot : slots) {
         if (!slot.on) continue;
-        const int height = slot.kind == enlarged ? bigSide : side;
-        const int width = height * slot.aspectNum / slot.aspectDen;
+        int height = slot.kind == enlarged ? bigSide : side;
+        int width = height * slot.aspectNum / slot.aspectDen;
+        if (slot.squares > 1) {  // kLayerGap (overlay.h) between the squares; at most half the area unless enlarged
+            const int room = slot.kind == enlarged ? l.viewWidth - 2 * margin : l.viewWidth / 2;
+            height = std::max(16, std::min(height, (room - kLayerGap * (slot.squares - 1)) / slot.squares));
+            width = height * slot.squares + kLayerGap * (slot.squares - 1);
+        }
         // Beside an enlarged inset the small ones are left out once they no longer fit.
         if (enlarged != InsetKind::None && slot.kind != enlarged && x + width > l.viewWidth - margin) continue;
         *slot.rect = {x, fbHeight - height - margin, width, height};

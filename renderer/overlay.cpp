@@ -82,6 +82,9 @@ std::unique_ptr<OverlayRenderer> OverlayRenderer::create(std::string& error) {
     if (!scene) return nullptr;
     auto depth = gl::Program::build("fullscreen.vert", "inset_depth.frag", "", error);
     if (!depth) return nullptr;
+    auto depthLayers = gl::Program::build("fullscreen.vert", "inset_depth.frag", "#define LAYERED 1\n", error);
+    if (!depthLayers) return nullptr;
+    r->depthLayers_ = std::move(*depthLayers);
     r->lines_ = std::move(*lines);
     r->scene_ = std::move(*scene);
     r->depth_ = std::move(*depth);
@@ -126,6 +129,35 @@ void OverlayRenderer::drawDepthInset(GLuint framebuffer, const InsetRect& rect, 
     glBindSampler(0, depthSampler_.id());
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+std::vector<InsetRect> OverlayRenderer::drawDepthLayersInset(GLuint framebuffer, const InsetRect& rect,
+                                                             GLuint arrayTexture, int layers, glm::vec2 window) const {
+    std::vector<InsetRect> squares;
+    if (rect.empty() || arrayTexture == 0 || layers <= 0) return squares;
+    const int gap = kLayerGap;
+    const int side = std::min(rect.height, (rect.width - gap * (layers - 1)) / layers);
+    if (side < 4) return squares;
+    GlStateGuard guard;
+    const int strip = std::max(2, side / 24);
+    for (int i = 0; i < layers; ++i) {
+        const InsetRect square{rect.x + i * (side + gap), rect.y, side, side};
+        squares.push_back(square);
+        enterRect(framebuffer, square);
+        depthLayers_.use();
+        depthLayers_.set("uReversed", 0);  // cascades never reverse the test (only PSM's inverted light does)
+        depthLayers_.set("uLayer", i);
+        depthLayers_.set("uWindow", window);
+        glBindTextureUnit(0, arrayTexture);
+        glBindSampler(0, depthSampler_.id());
+        glBindVertexArray(emptyVao_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        // The split's colour along the top edge (GL's origin is bottom-left).
+        glScissor(square.x, square.y + square.height - strip, square.width, strip);
+        const glm::vec4 c = cascadeColor(i);
+        glClearBufferfv(GL_COLOR, 0, &c.x);
+    }
+    return squares;
 }
 
 void OverlayRenderer::drawScene(GLuint framebuffer, const InsetRect& rect, const Scene& scene, const GpuScene& gpu,

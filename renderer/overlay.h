@@ -24,6 +24,9 @@ struct InsetRect {
     bool empty() const { return width <= 0 || height <= 0; }
 };
 
+// Pixels between the squares of drawDepthLayersInset.
+constexpr int kLayerGap = 3;
+
 class OverlayRenderer {
 public:
     // nullptr and a message when the overlay shaders do not build.
@@ -36,6 +39,11 @@ public:
     // `window`: the part of the fitted depth range stretched over dark..bright ({0, 1}: all of it).
     void drawDepthInset(GLuint framebuffer, const InsetRect& rect, GLuint depthTexture, bool reversed,
                         glm::vec2 window = {0.0f, 1.0f}) const;
+    // The layers of a cascades' depth array (GL_TEXTURE_2D_ARRAY) side by side in `rect`, layer 0
+    // at the left, each in a square of its own fitted to its own range, under a strip in its
+    // split's colour (cascadeColor). The squares' rectangles, left to right, are returned.
+    std::vector<InsetRect> drawDepthLayersInset(GLuint framebuffer, const InsetRect& rect, GLuint arrayTexture,
+                                                int layers, glm::vec2 window = {0.0f, 1.0f}) const;
     // The scene through `worldToClip` with simple two-sided diffuse lighting. `reversedDepth`
     // uses GL_GREATER (for the inverted PSM light, whose matrix stores the far side as larger z).
     // Depth is clamped, so geometry beyond the near/far planes is still drawn.
@@ -50,6 +58,7 @@ private:
     gl::Program lines_;
     gl::Program scene_;
     gl::Program depth_;
+    gl::Program depthLayers_;  // inset_depth.frag with LAYERED
     gl::VertexArray lineVao_;
     gl::VertexArray emptyVao_;
     mutable gl::Buffer lineBuffer_;

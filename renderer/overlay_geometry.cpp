@@ -93,6 +93,51 @@ std::vector<WireSet> overlayWires(const ShadowDiagnostics& d, const OverlaySetti
     return wires;
 }
 
+glm::vec4 cascadeColor(int split) {
+    static const glm::vec4 kColors[4] = {{1.0f, 0.45f, 0.45f, 1.0f},
+                                         {0.45f, 1.0f, 0.45f, 1.0f},
+                                         {0.45f, 0.6f, 1.0f, 1.0f},
+                                         {1.0f, 1.0f, 0.4f, 1.0f}};
+    return kColors[std::size_t(std::max(0, split)) % 4];
+}
+
+std::vector<WireSet> cascadeWires(const CascadeSetup& cascades, const OverlaySettings& o, const ViewFrustum& view) {
+    std::vector<WireSet> wires;
+    for (std::size_t i = 0; i < cascades.splits.size(); ++i) {
+        const CascadeSplit& split = cascades.splits[i];
+        const glm::vec4 color = cascadeColor(int(i));
+        if (o.drawV && split.zNear > 0.0 && split.zFar > split.zNear && std::isfinite(split.zFar)) {
+            WireSet slice;
+            slice.color = glm::vec4(glm::vec3(color) * 0.6f, 1.0f);  // darker: the slice, not B_i
+            appendPolygonEdges(cameraFrustum(splitFrustum(view, split.zNear, split.zFar)).faces(), slice.segments);
+            if (!slice.segments.empty()) wires.push_back(std::move(slice));
+        }
+        if (o.drawB && split.setup.valid) {
+            WireSet body;
+            body.color = color;
+            appendPolygonEdges(split.setup.diagnostics.bodyB, body.segments);
+            if (!body.segments.empty()) wires.push_back(std::move(body));
+        }
+    }
+    return wires;
+}
+
+ShadowDiagnostics cascadeFramingDiagnostics(const CascadeSetup& cascades) {
+    ShadowDiagnostics d;
+    bool first = true;
+    for (const CascadeSplit& split : cascades.splits) {
+        if (!split.setup.valid) continue;
+        if (first) {
+            d = split.setup.diagnostics;
+            d.bodyB.clear();
+            first = false;
+        }
+        const PolygonList& b = split.setup.diagnostics.bodyB;
+        d.bodyB.insert(d.bodyB.end(), b.begin(), b.end());
+    }
+    return d;
+}
+
 ObserverCamera observerCamera(const ShadowDiagnostics& d, const ViewFrustum& view, const Aabb& sceneBounds,
                               double yawDeg, double pitchDeg, double distance, double aspect) {
     Aabb framed;

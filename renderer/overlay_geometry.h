@@ -3,6 +3,7 @@
 // of the shadow setup, coloured as the thesis figures colour them (Fig. 4.2: V blue, S green,
 // B violet; Fig. 8.1: P red, light rays orange), and the third-person observer camera that looks
 // at them (Figs. 4.2, 8.1, 9.1).
+#include "math/cascades.h"
 #include "math/shadow_setup.h"
 #include "settings/settings.h"
 
@@ -27,6 +28,21 @@ void appendPolygonEdges(const PolygonList& faces, std::vector<glm::dvec3>& segme
 std::vector<WireSet> overlayWires(const ShadowDiagnostics& diagnostics, const OverlaySettings& overlays,
                                   const ViewFrustum& view, const Aabb& sceneBounds, const glm::dvec3& lightDirection,
                                   double markerSize);
+
+// The colour of cascade split i, the tint of csm.colorSplits (shaders/cascade.glsl): red, green,
+// blue, yellow from near to far; splits beyond the fourth repeat them.
+glm::vec4 cascadeColor(int split);
+
+// Cascaded shadow maps (issue 13): for every split its slice of the view frustum (overlays.drawV,
+// drawn darker) and its B_i (overlays.drawB), in the split's colour. Splits without a valid setup
+// draw their slice only. `view` is the whole view frustum the splits divide.
+std::vector<WireSet> cascadeWires(const CascadeSetup& cascades, const OverlaySettings& overlays,
+                                  const ViewFrustum& view);
+
+// Diagnostics for framing the observer on all splits: the first valid split's, with bodyB the
+// faces of every B_i together (so the framing covers the far splits too). Empty diagnostics
+// when no split is valid.
+ShadowDiagnostics cascadeFramingDiagnostics(const CascadeSetup& cascades);
 
 // A look-at + perspective camera standing outside the view frustum and B, looking at both.
 struct ObserverCamera {

@@ -2,17 +2,25 @@
 // The shadow map's depth as an inset: the effective depth (growing along the light's travel, so
 // reversed PSM maps read the same way) stretched over the range found on a grid of texels (and
 // within it the window the user picked), near = dark, far = bright; texels nothing was drawn into
-// are dark blue.
+// are dark blue. With LAYERED: one layer of the cascades' depth array (uLayer), each fitted to
+// its own range.
 in vec2 vUv;
 
+#ifdef LAYERED
+layout(binding = 0) uniform sampler2DArray uDepth;  // bound with a plain (non-compare) sampler
+uniform int uLayer;
+float rawDepth(vec2 uv) { return texture(uDepth, vec3(uv, float(uLayer))).r; }
+#else
 layout(binding = 0) uniform sampler2D uDepth;  // bound with a plain (non-compare) sampler
+float rawDepth(vec2 uv) { return texture(uDepth, uv).r; }
+#endif
 uniform bool uReversed;
 uniform vec2 uWindow;  // the shown part of the fitted range, [low, high] in 0..1 (the inset's range slider)
 
 out vec4 outColor;
 
 float effectiveDepth(vec2 uv) {
-    float d = texture(uDepth, uv).r;
+    float d = rawDepth(uv);
     return uReversed ? 1.0 - d : d;
 }
 

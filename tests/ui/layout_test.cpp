@@ -142,5 +142,19 @@ TEST(ViewerLayout, AClickedInsetIsEnlargedAndTheOthersStayBesideIt) {
     }
 }
 
+TEST(ViewerLayout, WithCascadesTheShadowMapInsetHasASquarePerLayer) {
+    Settings s = allInsets();
+    s.csm.enabled = true;
+    s.csm.splits = 3;
+    const app::Layout l = app::layoutFrame(1280, 720, true, s);
+    const InsetRect& r = l.shadowMapInset;
+    EXPECT_EQ(r.width, 3 * r.height + 2 * kLayerGap);  // three squares, two gaps
+    EXPECT_LE(r.width, l.viewWidth / 2);
+    EXPECT_GE(l.lightViewInset.x, r.x + r.width);  // the next inset starts after it
+    const app::Layout big = app::layoutFrame(1280, 720, true, s, 0, app::InsetKind::ShadowMap);
+    EXPECT_GT(big.shadowMapInset.height, r.height);
+    EXPECT_LE(big.shadowMapInset.x + big.shadowMapInset.width, big.viewWidth);
+}
+
 }  // namespace
 }  // namespace shadowlab

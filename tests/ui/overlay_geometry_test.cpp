@@ -98,5 +98,59 @@ TEST(OverlayGeometry, ObserverSeesTheCameraAndBFromOutside) {
         for (int j = 0; j < 4; ++j) EXPECT_TRUE(std::isfinite(top.view[i][j]));
 }
 
+// Issue 13's per-split overlays: each split's frustum slice and B_i in the split's colour.
+TEST(OverlayGeometry, CascadeWiresShowEverySplitsSliceAndBodyInItsColour) {
+    CascadeParams params;
+    params.splits = 3;
+    const CascadeSetup cascades = computeCascadeSetup(testView(), ShadowLight{}, testBounds(), params);
+    ASSERT_TRUE(cascades.error.empty()) << cascades.error;
+    ASSERT_EQ(cascades.splits.size(), 3u);
+    OverlaySettings o;
+    const auto wires = cascadeWires(cascades, o, testView());
+    ASSERT_EQ(wires.size(), 6u);  // slice + B_i per split
+    for (int i = 0; i < 3; ++i) {
+        const WireSet& slice = wires[std::size_t(2 * i)];
+        const WireSet& body = wires[std::size_t(2 * i + 1)];
+        EXPECT_EQ(body.color, cascadeColor(i));
+        EXPECT_EQ(glm::vec3(slice.color), glm::vec3(cascadeColor(i)) * 0.6f);
+        EXPECT_EQ(slice.segments.size(), 48u);  // a frustum: 6 quads
+        // The slice lies between the split's depths along the view direction.
+        for (const glm::dvec3& p : slice.segments) {
+            const double z = glm::dot(p - testView().eye, glm::dvec3(0, 0, -1));
+            EXPECT_GE(z, cascades.splits[std::size_t(i)].zNear - 1e-6);
+            EXPECT_LE(z, cascades.splits[std::size_t(i)].zFar + 1e-6);
+        }
+        EXPECT_FALSE(body.segments.empty());
+    }
+    EXPECT_NE(cascadeColor(0), cascadeColor(1));
+    EXPECT_EQ(cascadeColor(4), cascadeColor(0));
+    // The toggles: V off keeps the bodies, B off the slices, both off nothing.
+    o.drawV = false;
+    EXPECT_EQ(cascadeWires(cascades, o, testView()).size(), 3u);
+    o.drawB = false;
+    EXPECT_TRUE(cascadeWires(cascades, o, testView()).empty());
+    EXPECT_TRUE(cascadeWires(CascadeSetup{}, OverlaySettings{}, testView()).empty());
+}
+
+TEST(OverlayGeometry, TheObserverFramesTheBodiesOfAllSplits) {
+    CascadeParams params;
+    params.splits = 4;
+    const CascadeSetup cascades = computeCascadeSetup(testView(), ShadowLight{}, testBounds(), params);
+    ASSERT_EQ(cascades.splits.size(), 4u);
+    const ShadowDiagnostics d = cascadeFramingDiagnostics(cascades);
+    std::size_t faces = 0;
+    for (const CascadeSplit& s : cascades.splits) faces += s.setup.diagnostics.bodyB.size();
+    EXPECT_EQ(d.bodyB.size(), faces);
+    const ObserverCamera cam = observerCamera(d, testView(), testBounds(), 35.0, 35.0, 1.0, 4.0 / 3.0);
+    const glm::dmat4 vp = cam.viewProjection();
+    for (const CascadeSplit& s : cascades.splits)
+        for (const Polygon& face : s.setup.diagnostics.bodyB)
+            for (const glm::dvec3& p : face) {
+                const glm::dvec4 c = vp * glm::dvec4(p, 1.0);
+                EXPECT_TRUE(c.w > 0.0 && std::abs(c.x) <= c.w * 1.0001 && std::abs(c.y) <= c.w * 1.0001);
+            }
+    EXPECT_TRUE(cascadeFramingDiagnostics(CascadeSetup{}).bodyB.empty());
+}
+
 }  // namespace
 }  // namespace shadowlab

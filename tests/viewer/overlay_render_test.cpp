@@ -102,6 +102,45 @@ TEST_F(OverlayRenderTest, DepthInsetMapsNearToDarkAndMarksEmptyTexels) {
     EXPECT_GT(pixel(image, 120, 64).b, pixel(image, 120, 64).r + 20);
 }
 
+// Cascades (issue 13): the layers of the depth array side by side, each fitted to its own range
+// (layer 0 a ramp left to right, layer 1 the same ramp right to left, layer 2 empty), under a
+// strip in its split's colour.
+TEST_F(OverlayRenderTest, LayeredDepthInsetShowsEveryCascadeLayerSideBySide) {
+    gl::Texture depth = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, 32, 32, 3);
+    std::vector<float> values(32 * 32 * 3, 1.0f);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            values[std::size_t(y * 32 + x)] = 0.1f + 0.5f * float(x) / 31.0f;                // layer 0
+            values[std::size_t(32 * 32 + y * 32 + x)] = 0.1f + 0.5f * float(31 - x) / 31.0f;  // layer 1
+        }
+    glTextureSubImage3D(depth.id(), 0, 0, 0, 0, 32, 32, 3, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+    const std::vector<InsetRect> squares =
+        overlays->drawDepthLayersInset(target->framebuffer(), {0, 0, kSize, 40}, depth.id(), 3);
+    ASSERT_EQ(squares.size(), 3u);
+    for (const InsetRect& q : squares) {
+        EXPECT_EQ(q.width, q.height);
+        EXPECT_LE(q.x + q.width, kSize);
+    }
+    EXPECT_GT(squares[1].x, squares[0].x + squares[0].width - 1);
+    const RgbaImage image = target->readColor();
+    auto at = [&](const InsetRect& q, double u, double v) {
+        return pixel(image, q.x + int(u * (q.width - 1)), q.y + int(v * (q.height - 1)));
+    };
+    EXPECT_LT(at(squares[0], 0.1, 0.4).r + 40, at(squares[0], 0.9, 0.4).r);  // near left, far right
+    EXPECT_GT(at(squares[1], 0.1, 0.4).r, at(squares[1], 0.9, 0.4).r + 40);  // mirrored
+    EXPECT_GT(at(squares[2], 0.5, 0.4).b, at(squares[2], 0.5, 0.4).r + 20);  // empty layer: dark blue
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec4 c = cascadeColor(i);
+        const glm::u8vec4 top = at(squares[std::size_t(i)], 0.5, 1.0);
+        EXPECT_NEAR(top.r, c.r * 255.0f, 2.0f) << i;
+        EXPECT_NEAR(top.g, c.g * 255.0f, 2.0f) << i;
+        EXPECT_NEAR(top.b, c.b * 255.0f, 2.0f) << i;
+    }
+    EXPECT_TRUE(overlays->drawDepthLayersInset(target->framebuffer(), {0, 0, kSize, 40}, 0, 3).empty());
+    EXPECT_TRUE(overlays->drawDepthLayersInset(target->framebuffer(), {0, 0, 4, 4}, depth.id(), 3).empty());
+}
+
 TEST_F(OverlayRenderTest, SceneInsetDrawsTheSceneThroughTheMatrix) {
     Scene scene = test::planeBoxScene();
     GpuScene gpu(scene);
