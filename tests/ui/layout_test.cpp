@@ -4,6 +4,7 @@
 #include "panels.h"
 #include "viewer_frame.h"
 #include "viewer_input.h"
+#include "imgui_frame_test.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -48,46 +49,34 @@ TEST(FlowLayout, ALabelWiderThanTheLineIsShortenedWithAnEllipsis) {
     EXPECT_TRUE(ui::flowLayout({}, 100.0f, 8.0f, 8.0f, sevenPerChar).empty());
 }
 
-class ImGuiContextTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 720);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
-};
+using ui::ImGuiFrameTest;
 
-TEST_F(ImGuiContextTest, EveryLineOfTheKeysHelpFitsTheControlWindow) {
+TEST_F(ImGuiFrameTest, EveryLineOfTheKeysHelpFitsTheControlWindow) {
     const ImGuiStyle& style = ImGui::GetStyle();
     // The help sits in a tree node (one indent) inside the collapsing header of the window.
     const float room = ui::controlWindowWidth() - 2.0f * style.WindowPadding.x - style.IndentSpacing -
                        style.ScrollbarSize;
-    ImGui::NewFrame();  // the font is bound by the frame
-    std::istringstream lines(ui::kKeysHelp);
-    std::string line;
     int count = 0;
-    while (std::getline(lines, line)) {
-        ++count;
-        EXPECT_LE(ImGui::CalcTextSize(line.c_str()).x, room) << "'" << line << "'";
-    }
-    ImGui::Render();
+    frame([&] {  // the font is bound by the frame
+        std::istringstream lines(ui::kKeysHelp);
+        std::string line;
+        while (std::getline(lines, line)) {
+            ++count;
+            EXPECT_LE(ImGui::CalcTextSize(line.c_str()).x, room) << "'" << line << "'";
+        }
+    });
     EXPECT_GE(count, 10);
 }
 
-TEST_F(ImGuiContextTest, AFoldedControlWindowSaysSo) {
+TEST_F(ImGuiFrameTest, AFoldedControlWindowSaysSo) {
     Settings settings;
     ui::ControlContext ctx;
     for (bool fold : {false, true}) {
-        ImGui::NewFrame();
-        ImGui::SetNextWindowCollapsed(fold, ImGuiCond_Always);
-        const ui::ControlResult r = ui::drawControlWindow(settings, ctx, 1280, 720);
-        ImGui::Render();
+        ui::ControlResult r;
+        frame([&] {
+            ImGui::SetNextWindowCollapsed(fold, ImGuiCond_Always);
+            r = ui::drawControlWindow(settings, ctx, 1280, 720);
+        });
         EXPECT_EQ(r.collapsed, fold);
     }
 }

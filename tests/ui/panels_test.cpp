@@ -4,6 +4,7 @@
 #include "panels.h"
 #include "view_state.h"
 #include "widgets.h"
+#include "imgui_frame_test.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -14,28 +15,6 @@
 namespace shadowlab::ui {
 namespace {
 
-class ImGuiFrameTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 720);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas; no texture upload needed
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
-
-    template <class Draw>
-    void frame(Draw&& draw) {
-        ImGui::NewFrame();
-        draw();
-        ImGui::Render();
-        ASSERT_NE(ImGui::GetDrawData(), nullptr);
-    }
-};
 
 Scene sceneWithLightsAndCameras() {
     Scene scene;
