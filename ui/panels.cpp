@@ -482,6 +482,17 @@ bool drawOverlayPanel(Settings& s, ObserverView& observer) {
                         "show their frustum L (orange).");
     ImGui::TextDisabled("also drawn: orange lines = light rays / spot frustum L,");
     ImGui::TextDisabled("yellow star = projection centre C of P (LiSPSM)");
+    if (s.csm.enabled) {
+        // The split colours of csm.colorSplits (shaders/cascade.glsl), near to far.
+        ImGui::TextDisabled("cascades: B_i and V's slice (darker) per split:");
+        const ImVec4 colours[4] = {{1.0f, 0.45f, 0.45f, 1.0f}, {0.45f, 1.0f, 0.45f, 1.0f}, {0.45f, 0.6f, 1.0f, 1.0f},
+                                   {1.0f, 1.0f, 0.4f, 1.0f}};
+        for (int i = 0; i < std::clamp(s.csm.splits, 1, 4); ++i) {
+            if (i > 0) ImGui::SameLine();
+            ImGui::TextColored(colours[i], "split %d", i + 1);
+        }
+        ImGui::TextDisabled("the shadow-map inset shows every layer, near to far");
+    }
     ImGui::BeginDisabled(!o.shadowMapInset);
     float window[2] = {float(o.depthWindowLow), float(o.depthWindowHigh)};
     if (ImGui::DragFloatRange2("depth range", &window[0], &window[1], 0.005f, 0.0f, 1.0f, "%.3f", "%.3f",
