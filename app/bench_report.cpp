@@ -34,8 +34,9 @@ json binsJson(const std::vector<DepthBin>& bins) {
 }
 
 json caseJson(const BenchCaseResult& c) {
-    json j = {{"scene", c.scene},     {"camera", c.camera},   {"method", methodName(c.method)},
-              {"mapSize", c.mapSize}, {"variant", c.variant}, {"width", c.width},
+    json j = {{"scene", c.scene},         {"camera", c.camera},       {"method", methodChoiceName(c.method)},
+              {"mapSize", c.mapSize},     {"layerSize", c.layerSize}, {"layers", c.layers},
+              {"mapTexels", c.mapTexels}, {"variant", c.variant},     {"width", c.width},
               {"height", c.height}};
     if (!c.error.empty()) {
         j["error"] = c.error;
@@ -115,7 +116,7 @@ std::string resultsJson(const BenchResults& r) {
 
 std::string resultsCsv(const BenchResults& r) {
     std::ostringstream out;
-    out << "scene,camera,method,mapSize,variant,setupUs,frameMs,gpuMs,footprintMean,footprintMedian,footprintP95,"
+    out << "scene,camera,method,mapSize,layerSize,layers,mapTexels,variant,setupUs,frameMs,gpuMs,footprintMean,footprintMedian,footprintP95,"
            "footprintP99,footprintMax,undersampled,bisectorMedian,bisectorP99,limit,distanceToLimit,"
            "bisectorDistanceToLimit,eTotal,falseShadow,falseLight,eEdge,maxFlipShare,error\n";
     for (const BenchCaseResult& c : r.cases) {
@@ -127,10 +128,10 @@ std::string resultsCsv(const BenchResults& r) {
         };
         char line[1024];
         std::snprintf(line, sizeof line,
-                      "%s,%s,%s,%d,%s,%.2f,%.3f,%.3f,%.5g,%.5g,%.5g,%.5g,%.5g,%.5f,%.5g,%.5g,%.5g,%.5g,%.5g,%s,%s,%s,%s,"
+                      "%s,%s,%s,%d,%d,%d,%lld,%s,%.2f,%.3f,%.3f,%.5g,%.5g,%.5g,%.5g,%.5g,%.5f,%.5g,%.5g,%.5g,%.5g,%.5g,%s,%s,%s,%s,"
                       "%.6f,%s\n",
-                      quoted(c.scene).c_str(), quoted(c.camera).c_str(), methodName(c.method), c.mapSize,
-                      quoted(c.variant).c_str(), c.setupUsMedian, c.frameMsMedian, c.gpuMsTotal, a.footprint.mean,
+                      quoted(c.scene).c_str(), quoted(c.camera).c_str(), methodChoiceName(c.method).c_str(),
+                      c.mapSize, c.layerSize, c.layers, c.mapTexels, quoted(c.variant).c_str(), c.setupUsMedian, c.frameMsMedian, c.gpuMsTotal, a.footprint.mean,
                       a.footprint.median, a.footprint.p95, a.footprint.p99, a.footprint.max,
                       a.footprint.undersampledFraction, a.bisector.median, a.bisector.p99, a.limit, a.distanceToLimit,
                       a.bisectorDistanceToLimit, a.truth ? std::to_string(a.truth->eTotal).c_str() : "",
@@ -144,20 +145,25 @@ std::string resultsCsv(const BenchResults& r) {
 
 void printTable(const BenchResults& r, std::ostream& out) {
     char line[512];
-    std::snprintf(line, sizeof line, "%-34s %-7s %5s %-10s %9s %9s %8s %8s %8s %9s %8s %7s %7s\n", "scene / camera",
-                  "method", "map", "variant", "setup us", "frame ms", "GPU ms", "p99", "bis p99", "p99/limit",
+    std::snprintf(line, sizeof line, "%-34s %-10s %-9s %6s %-10s %9s %9s %8s %8s %8s %9s %8s %7s %7s\n",
+                  "scene / camera", "method", "map", "Mtexel", "variant", "setup us", "frame ms", "GPU ms", "p99", "bis p99", "p99/limit",
                   "E_total", "E_edge", "flips");
     out << line;
     for (const BenchCaseResult& c : r.cases) {
         std::string view = std::filesystem::path(c.scene).stem().string() + " / " + c.camera;
         if (view.size() > 34) view = view.substr(0, 31) + "...";
         if (!c.error.empty()) {
-            out << view << "  " << methodName(c.method) << "  " << c.mapSize << "  error: " << c.error << "\n";
+            out << view << "  " << methodChoiceName(c.method) << "  " << c.mapSize << "  error: " << c.error << "\n";
             continue;
         }
         const AccuracyReport& a = c.accuracy;
-        std::snprintf(line, sizeof line, "%-34s %-7s %5d %-10.10s %9.1f %9.2f %8.3f %8.3f %8.3f %9.2f %7.2f%% %7.3f %6.3f%%\n",
-                      view.c_str(), methodName(c.method), c.mapSize, c.variant.c_str(), c.setupUsMedian, c.frameMsMedian,
+        // The maps as rendered: "2048" or "4x1024" (equal memory: equal Mtexel).
+        const std::string map =
+            c.layers > 1 ? std::to_string(c.layers) + "x" + std::to_string(c.layerSize) : std::to_string(c.layerSize);
+        std::snprintf(line, sizeof line,
+                      "%-34s %-10s %-9s %6.2f %-10.10s %9.1f %9.2f %8.3f %8.3f %8.3f %9.2f %7.2f%% %7.3f %6.3f%%\n",
+                      view.c_str(), methodChoiceName(c.method).c_str(), map.c_str(), double(c.mapTexels) / 1048576.0,
+                      c.variant.c_str(), c.setupUsMedian, c.frameMsMedian,
                       c.gpuMsTotal, a.footprint.p99, a.bisector.p99, a.distanceToLimit,
                       a.truth ? 100.0 * a.truth->eTotal : 0.0, a.truth ? a.truth->eEdge : 0.0, 100.0 * maxFlipShare(c));
         out << line;

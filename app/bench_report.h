@@ -4,6 +4,7 @@
 // scripts/bench_charts.py with matplotlib.
 #include "accuracy.h"
 #include "canonical_case.h"
+#include "settings/method_choice.h"
 
 #include <filesystem>
 #include <map>
@@ -21,8 +22,11 @@ struct PassTiming {
 
 struct BenchCaseResult {
     std::string scene, camera, variant;
-    ShadowMethod method = ShadowMethod::Lispsm;
-    int mapSize = 0;
+    MethodChoice method;
+    int mapSize = 0;    // the spec's map size (cascades at equal memory: of the one map they equal)
+    int layerSize = 0;  // texels per side of each map actually rendered (cascades: of each layer)
+    int layers = 1;     // 1, or the cascade's splits
+    long long mapTexels = 0;  // layers x layerSize^2: equal memory means equal mapTexels
     int width = 0, height = 0;
     double setupUsMedian = 0.0;  // CPU: shadow setup + culling, median of the repeats
     double frameMsMedian = 0.0;  // CPU wall time of a frame including glFinish

@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <set>
 
 namespace shadowlab::app {
 
@@ -116,13 +116,17 @@ void parseInto(const json& root, const std::string& folder, BenchSpec& spec) {
                 spec.scenes.push_back(parseScene(value[i], key + "[" + std::to_string(i) + "]", folder));
         } else if (key == "methods") {
             spec.methods.clear();
-            std::set<ShadowMethod> seen;
             for (const json& m : array(value, key)) {
-                ShadowMethod method;
-                if (!m.is_string() || !parseMethod(m.get<std::string>(), method))
-                    bad(key, "expected ssm, ssm-unfocused, psm or lispsm");
-                if (seen.insert(method).second) spec.methods.push_back(method);
+                MethodChoice method;
+                if (!m.is_string() || !parseMethodChoice(m.get<std::string>(), method))
+                    bad(key, std::string("expected names of ") + methodChoiceNames());
+                if (std::find(spec.methods.begin(), spec.methods.end(), method) == spec.methods.end())
+                    spec.methods.push_back(method);
             }
+        } else if (key == "csmLayers") {
+            if (!value.is_string() || (value != "equalMemory" && value != "mapSize"))
+                bad(key, "expected \"equalMemory\" or \"mapSize\"");
+            spec.csmEqualMemory = value == "equalMemory";
         } else if (key == "mapSizes") {
             spec.mapSizes.clear();
             for (const json& s : array(value, key)) spec.mapSizes.push_back(intIn(s, key, 512, 8192));
@@ -147,6 +151,14 @@ std::size_t BenchSpec::caseCount() const {
     std::size_t views = 0;
     for (const BenchScene& s : scenes) views += std::max<std::size_t>(1, s.cameras.size());
     return views * methods.size() * mapSizes.size() * variants.size();
+}
+
+void applyBenchCase(Settings& settings, const MethodChoice& method, int mapSize, bool csmEqualMemory) {
+    applyMethodChoice(settings, method);
+    sanitize(settings);  // csm.splits in range before it sizes the layers
+    settings.shadowMapSize =
+        settings.csm.enabled && csmEqualMemory ? equalMemoryLayerSize(mapSize, settings.csm.splits) : mapSize;
+    sanitize(settings);
 }
 
 bool parseBenchSpec(const std::string& jsonText, const std::string& folder, BenchSpec& spec, std::string& error) {

@@ -8,13 +8,18 @@
 //     "width": 1280, "height": 720, "warmup": 2, "repeats": 5,
 //     "groundTruth": true, "temporal": true, "canonical": true,
 //     "scenes": [ { "file": "Sponza/Sponza.gltf", "cameras": ["CameraMain", 1, "views/hall.json"] } ],
-//     "methods": ["ssm", "psm", "lispsm"],
-//     "mapSizes": [1024, 2048],
+//     "methods": ["ssm", "psm", "lispsm", "csm-ssm", "csm-stable", "csm-lispsm"],
+//     "mapSizes": [1024, 2048], "csmLayers": "equalMemory",
 //     "variants": [ { "name": "slope + pcf2x2", "set": ["bias.mode=slope", "filter.filter=pcf2x2"] } ]
 //   }
 // Scene files and view files are relative to the spec's folder. A camera is a scene camera's name,
 // its index (0-based), or a view JSON file (a path ending in .json: the whole settings state).
-#include "settings/settings.h"
+// A method is any name of settings/method_choice.h: one map, or cascades ("csm-ssm", "csm-stable",
+// "csm-lispsm"; plain "csm" keeps the variant's csm.perSplit; csm.splits etc. come from the
+// variants). "csmLayers" says what a map size means for a cascaded case: "equalMemory" (the
+// default) gives its csm.splits layers together the texels of one mapSize^2 map (4 x 1024^2 for
+// 2048), "mapSize" makes every layer mapSize^2. Every case reports its layers and total texels.
+#include "settings/method_choice.h"
 
 #include <string>
 #include <variant>
@@ -49,12 +54,18 @@ struct BenchSpec {
     bool temporal = true;
     bool canonical = true;  // run the canonical validation (thesis 8.2 closed forms) once
     std::vector<BenchScene> scenes;
-    std::vector<ShadowMethod> methods{ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm};
+    std::vector<MethodChoice> methods{{ShadowMethod::SsmFocused, false, {}}, {ShadowMethod::Psm, false, {}},
+                                      {ShadowMethod::Lispsm, false, {}}};
     std::vector<int> mapSizes{2048};
+    bool csmEqualMemory = true;  // "csmLayers": "equalMemory" (true) or "mapSize"
     std::vector<BenchVariant> variants{BenchVariant{}};
 
     std::size_t caseCount() const;
 };
+
+// The settings of one case: the method choice, the map size (for cascades: the layer size that
+// csmLayers gives for the settings' csm.splits), sanitized.
+void applyBenchCase(Settings& settings, const MethodChoice& method, int mapSize, bool csmEqualMemory);
 
 // `folder` resolves relative scene and view paths. false with `error` naming the bad key.
 bool parseBenchSpec(const std::string& jsonText, const std::string& folder, BenchSpec& spec, std::string& error);

@@ -138,7 +138,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
     for (const BenchCamera& camera : cameras)
         for (const BenchVariant& variant : spec.variants)
             for (int mapSize : spec.mapSizes)
-                for (ShadowMethod method : spec.methods) {
+                for (const MethodChoice& method : spec.methods) {
                     BenchCaseResult c;
                     c.scene = entry.file;
                     c.camera = camera.name;
@@ -148,19 +148,20 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                     c.width = spec.width;
                     c.height = spec.height;
                     progress.show(done, std::filesystem::path(entry.file).stem().string() + " / " + camera.name + "  " +
-                                            methodName(method) + " " + std::to_string(mapSize));
+                                            methodChoiceName(method) + " " + std::to_string(mapSize));
                     Settings settings;
                     std::string error;
                     bool ok = viewSettings(*scene, camera, settings, error);
                     for (std::size_t i = 0; ok && i < variant.sets.size(); ++i) ok = setByKey(settings, variant.sets[i], error);
                     if (ok) {
-                        settings.method = method;
-                        settings.shadowMapSize = mapSize;
                         settings.viewMode = ViewMode::Lit;
                         // Every timed frame renders its shadow map: with a still camera the map
                         // would otherwise be reused and the shadow pass would time nothing.
                         settings.skip.reuseShadowMap = false;
-                        sanitize(settings);
+                        applyBenchCase(settings, method, mapSize, spec.csmEqualMemory);
+                        c.layerSize = settings.shadowMapSize;
+                        c.layers = settings.csm.enabled ? settings.csm.splits : 1;
+                        c.mapTexels = shadowMapTexels(settings);
                         timeCase(renderer, *scene, settings, target, spec.warmup, spec.repeats, c);
                         const MeasureFrame frame = measureView(renderer, *scene, settings, spec.width, spec.height);
                         c.accuracy = analyseFrame(frame, rays.get(), truthLight(*scene, settings, settings.animation.time));

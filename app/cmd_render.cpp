@@ -11,6 +11,7 @@
 #include "scenes/animation.h"
 #include "ground_plane.h"
 #include "render_compare.h"
+#include "settings/method_choice.h"
 #include "view_setup.h"
 
 #include <CLI/CLI.hpp>
@@ -67,7 +68,8 @@ AccuracyReport measureMethod(Renderer& renderer, const Scene& scene, const Setti
         std::cout << "method        frame ms  measured px   pixels/texel: mean  median     p95     p99      max  "
                      "undersampled  bisector p99  p99/limit"
                   << (rays ? "  E_total  false shadow  false light  E_edge" : "") << "\n";
-    std::printf("%-12s %9.2f %12zu %19.3f %7.3f %7.3f %7.3f %8.2f %12.1f%% %13.3f %10.2f", methodName(settings.method),
+    std::printf("%-12s %9.2f %12zu %19.3f %7.3f %7.3f %7.3f %8.2f %12.1f%% %13.3f %10.2f",
+                methodChoiceName(methodChoiceOf(settings)).c_str(),
                 frameMs, a.footprint.measuredPixels, a.footprint.mean, a.footprint.median, a.footprint.p95,
                 a.footprint.p99, a.footprint.max, 100.0 * a.footprint.undersampledFraction, a.bisector.p99,
                 a.distanceToLimit);
@@ -92,10 +94,10 @@ void writeStats(Renderer& renderer, const std::string& file) {
 void checkImageSize(const RenderOptions& options) {
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
         fail("--width/--height must be between 16 and 16384", 2);
-    const int views = options.overrides.method == "all" ? 3 : 1;
+    const int views = options.overrides.method == "all" ? int(allMethodChoices().size()) : 1;
     std::string error;
     if (!pngWritable(options.width * views, options.height, error))
-        fail("--width " + std::to_string(options.width) + (views > 1 ? " x 3 methods" : "") + " by --height " +
+        fail("--width " + std::to_string(options.width) + (views > 1 ? " x " + std::to_string(views) + " methods" : std::string()) + " by --height " +
                  std::to_string(options.height) + ": " + error, 2);
     if (options.measure && std::int64_t(options.width) * options.height > kMaxMeasuredPixels)
         fail("--measure works up to 3840 x 2160 pixels (the float measurement targets take ~100 bytes per pixel)", 2);
@@ -150,10 +152,23 @@ void runRender(const RenderOptions& options) {
         if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
         return;
     }
+    // --method all: every method side by side, the cascades at the memory of the one map
+    // (4 splits of shadowMapSize/2, settings/method_choice.h), labelled with their layers.
     const bool all = options.overrides.method == "all";
-    const std::vector<ShadowMethod> methods =
-        all ? std::vector<ShadowMethod>{ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm}
-            : std::vector<ShadowMethod>{settings.method};
+    const std::vector<MethodChoice> methods = all ? allMethodChoices() : std::vector<MethodChoice>{methodChoiceOf(settings)};
+    std::vector<Settings> views;
+    std::vector<std::string> labels;
+    for (const MethodChoice& m : methods) {
+        Settings view = settings;
+        if (all) {
+            applyMethodChoice(view, m);
+            if (view.csm.enabled) view.shadowMapSize = equalMemoryLayerSize(settings.shadowMapSize, view.csm.splits);
+        }
+        views.push_back(view);
+        labels.push_back(methodChoiceName(m) +
+                         (view.csm.enabled ? " " + std::to_string(view.csm.splits) + "x" + std::to_string(view.shadowMapSize)
+                                           : std::string()));
+    }
     RgbaImage image;
     image.width = options.width * int(methods.size());
     image.height = options.height;
@@ -161,13 +176,12 @@ void runRender(const RenderOptions& options) {
     RenderTarget target(options.width, options.height);
     RgbaImage mismatches;  // --mismatch-out
     for (std::size_t i = 0; i < methods.size(); ++i) {
-        Settings view = settings;
-        view.method = methods[i];
+        const Settings& view = views[i];
         FrameStats stats = renderer->renderSettled(*scene, view, settings.animation.time,
                                             Viewport{target.framebuffer(), 0, 0, options.width, options.height});
         if (!stats.lightNote.empty() && i == 0) std::cerr << "shadowlab render: note: " << stats.lightNote << "\n";
         RgbaImage part = target.readColor();
-        if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
+        if (all) drawLabel(part, 8, 8, labels[i], 3);
         image.blit(part, options.width * int(i), 0);
         if (!options.statsFile.empty() && i == 0) writeStats(*renderer, options.statsFile);
         if (options.measure) {
@@ -175,11 +189,11 @@ void runRender(const RenderOptions& options) {
             if (!options.mismatchOut.empty()) {
                 if (mismatches.pixels.empty()) mismatches = RgbaImage{image.width, image.height, image.pixels};
                 RgbaImage part = mismatchImage(a.verdicts, options.width, options.height);
-                if (all) drawLabel(part, 8, 8, methodName(methods[i]), 3);
+                if (all) drawLabel(part, 8, 8, labels[i], 3);
                 mismatches.blit(part, options.width * int(i), 0);
             }
             if (options.temporal && rays) {
-                std::printf("  %s state flips with steady truth:", methodName(methods[i]));
+                std::printf("  %s state flips with steady truth:", methodChoiceName(methods[i]).c_str());
                 for (const TemporalFigures& t :
                      temporalStability(*renderer, *scene, view, options.width, options.height, *rays))
                     std::printf("  %s %.3f%% (%zu points)", t.step.c_str(), 100.0 * t.flipShare, t.comparedPoints);
@@ -206,7 +220,8 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
     cmd->add_option("--camera", options->camera,
                     "the scene's glTF camera to render from, by name or 0-based index (before --view and --set)");
-    cmd->add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm, lispsm, or all (side by side)");
+    cmd->add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm, lispsm, csm (csm.perSplit), csm-ssm, csm-stable, csm-lispsm, or all "
+                    "(the 3 one-map methods and the 3 cascades at equal memory, side by side)");
     cmd->add_option("--set", options->overrides.sets, "a setting as key=value, e.g. bias.mode=slope (repeatable)");
     cmd->add_option("--compare", options->compare,
                     "A/B compare: render with view state A and with B (JSON or a shadowlab screenshot), each on top "

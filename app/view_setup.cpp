@@ -3,6 +3,7 @@
 #include "frame_setup.h"
 #include "png_text.h"
 #include "scenes/gltf_loader.h"
+#include "settings/method_choice.h"
 
 #include <filesystem>
 #include <fstream>
@@ -103,16 +104,14 @@ bool readViewFile(const std::string& file, Settings& settings, std::string& erro
 
 bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error) {
     if (!overrides.viewFile.empty() && !readViewFile(overrides.viewFile, settings, error)) return false;
-    if (overrides.method == "csm") {
-        settings.csm.enabled = true;  // cascades: csm.splits, csm.lambda, csm.perSplit (--set)
-    } else if (!overrides.method.empty() && overrides.method != "all") {
-        ShadowMethod m{};
-        if (!parseMethod(overrides.method, m)) {
-            error = "unknown method '" + overrides.method + "' (ssm, ssm-unfocused, psm, lispsm, csm, all)";
+    // One map or cascades (settings/method_choice.h); "all" is render's side by side.
+    if (!overrides.method.empty() && overrides.method != "all") {
+        MethodChoice choice;
+        if (!parseMethodChoice(overrides.method, choice)) {
+            error = "unknown method '" + overrides.method + "' (" + methodChoiceNames() + ", all)";
             return false;
         }
-        settings.method = m;
-        settings.csm.enabled = false;
+        applyMethodChoice(settings, choice);
     }
     for (const std::string& s : overrides.sets)
         if (!setByKey(settings, s, error)) return false;

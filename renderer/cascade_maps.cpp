@@ -1,7 +1,5 @@
 #include "cascade_maps.h"
 
-#include "shadow_resources.h"
-
 #include <stdexcept>
 #include <string>
 
@@ -26,11 +24,27 @@ void CascadeMaps::ensure(int size, int layers) {
         if (!samplers_[linear]) samplers_[linear] = createCompareSampler(linear, /*reversed=*/false);
     size_ = size;
     layers_ = layers;
+    content_.assign(std::size_t(layers), ShadowMapKey{});
+    hasContent_.assign(std::size_t(layers), false);
+}
+
+bool CascadeMaps::holds(int layer, const ShadowMapKey& key) const {
+    const std::size_t i = std::size_t(layer);
+    return layer >= 0 && i < hasContent_.size() && hasContent_[i] && content_[i] == key;
+}
+
+void CascadeMaps::setContent(int layer, ShadowMapKey key) {
+    const std::size_t i = std::size_t(layer);
+    if (layer < 0 || i >= content_.size()) return;
+    content_[i] = std::move(key);
+    hasContent_[i] = true;
 }
 
 void CascadeMaps::release() {
     depth_ = {};
     framebuffers_.clear();
+    content_.clear();
+    hasContent_.clear();
     size_ = layers_ = 0;
 }
 

@@ -45,11 +45,16 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     params.perSplit = s.csm.perSplit;
     params.mapResolution = s.shadowMapSize;
     params.base = shadowParams(s, frame.view, frame.scene.bounds);
-    // LiSPSM per split: n from the split's own near and far (thesis 9.2.5 applied per split), not
-    // from a virtual far plane of the whole view.
-    params.base.lispsm.virtualFar = 0.0;
-    params.base.lispsm.pseudoNear = 0.0;
+    // The visible depth range and receivers (depth pre-pass): the splits cover what is seen, and
+    // each split's LiSPSM search measures the receivers of its own range (math/cascades.h).
+    if (s.csm.fitVisibleDepth) {
+        const VisibleDepthRange visible = visibleDepthRange(frame, stats);
+        params.visibleNear = visible.nearest;
+        params.visibleFar = visible.farthest;
+        params.base.receiverPoints = visible.receivers;
+    }
     frame.cascades = computeCascadeSetup(frame.view, shadowLight(frame.light), frame.scene.bounds, params);
+    lastCascades_ = frame.cascades;
     const CascadeSplit* first = firstValidSplit(frame.cascades);
     if (!frame.cascades.error.empty() || !first) {
         stats.shadow.fallback = frame.cascades.error;
@@ -85,6 +90,7 @@ void Renderer::cascadeShadowPass(const Frame& frame, FrameStats& stats) {
     const int size = frame.settings.shadowMapSize;
     cascadeMaps_.ensure(size, layers);
     stats.shadowMapSize = size;
+    stats.cascadeLayersReused = 0;
     for (int i = 0; i < layers; ++i) {
         const CascadeSplit& split = frame.cascades.splits[std::size_t(i)];
         Frame layer = frame;
@@ -93,10 +99,21 @@ void Renderer::cascadeShadowPass(const Frame& frame, FrameStats& stats) {
         layer.casters = split.setup.valid ? frame.cascadeCasters[std::size_t(i)] : InstanceList{};
         layer.shadowMapMirrored =
             split.setup.valid && !lightFacingIsCounterClockwise(layer.worldToShadowClip, frame.light, split.setup.bodyBounds);
+        // Per layer, as the single map (skip.reuseShadowMap): a split whose matrix, depth range
+        // and casters did not change keeps its layer.
+        ShadowMapKey key = shadowMapKey(layer);
+        if (frame.settings.skip.reuseShadowMap && cascadeMaps_.holds(i, key)) {
+            ++stats.cascadeLayersReused;
+            continue;
+        }
         drawShadowDepth(layer, cascadeMaps_.framebuffer(i), size, stats.shadowPass);
+        cascadeMaps_.setContent(i, std::move(key));
     }
     shadowTimer_.end();
+    stats.shadowMapReused = layers > 0 && stats.cascadeLayersReused == layers;
     const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
+    // (A fixed name: the bench groups the passes of its repeats by name; cascadeLayersReused says
+    // how many layers were kept.)
     stats.passes.push_back({"shadow maps (" + std::to_string(layers) + " splits)", cpuMs, shadowTimer_.lastMs()});
     timedPasses_.push_back({stats.passes.size() - 1, &shadowTimer_});
 }

@@ -35,6 +35,7 @@ std::string frameStatsJson(const FrameStats& s) {
         {"hierarchicalCulling", s.hierarchicalCulling},
         {"shadowMapSize", s.shadowMapSize},
         {"shadowMapReused", s.shadowMapReused},
+        {"cascadeLayersReused", s.cascadeLayersReused},
         {"visibleDepth", visibleDepthSourceName(s.visibleDepth)},
         {"passes", passes},
     };

@@ -45,6 +45,7 @@ struct FrameStats {
     bool hierarchicalCulling = false;
     int shadowMapSize = 0;
     bool shadowMapReused = false;  // nothing the map depends on changed: last frame's map was used
+    int cascadeLayersReused = 0;   // csm: layers whose split did not change (shadowMapReused: all of them)
     VisibleDepthSource visibleDepth = VisibleDepthSource::NotNeeded;
     // A later frame would differ from this one although nothing changes: the visible depth used
     // here is an estimate and its measurement is in flight. The viewer draws one more frame.

@@ -183,6 +183,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
                 resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}, {}};
     stats.lightNote = frame.light.note;
     lastSetup_ = ShadowSetup{};  // a frame without shadows must not show the previous frame's B
+    lastCascades_ = CascadeSetup{};
     if (!gpuScene_) return stats;
     cullView(frame, stats);
 

@@ -77,6 +77,14 @@ public:
     // The last shadow map (depth texture), for insets; 0 before the first shadowed frame.
     GLuint shadowMapTexture() const { return shadowMaps_.empty() ? 0 : shadowMap().texture(); }
     const ShadowSetup& lastShadowSetup() const { return lastSetup_; }
+    // Cascaded shadow maps (settings.csm) of the last frame: every split's eye-depth range, its
+    // ShadowSetup (B_i, V_i, ... in setup.diagnostics when an overlay asked for polygons) and
+    // texel size; no splits when the last frame used one map. lastShadowSetup() is then the first
+    // split that sees something. The maps: one layer per split of a GL_TEXTURE_2D_ARRAY (depth,
+    // compare mode on; 0 when csm is off).
+    const CascadeSetup& lastCascadeSetup() const { return lastCascades_; }
+    GLuint cascadeMapTexture() const { return cascadeMaps_.texture(); }
+    int cascadeMapLayers() const { return cascadeMaps_.layers(); }
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
 
 private:
@@ -135,6 +143,7 @@ private:
     std::uint64_t mapUseClock_ = 0;
     std::size_t currentMap_ = 0;
     CascadeMaps cascadeMaps_;
+    CascadeSetup lastCascades_;  // lastCascadeSetup()
     ShadowTermTargets termTargets_;
     VisibleDepthPrePass visibleDepth_;  // PSM auto near / LiSPSM auto z_f
     MsaaTarget msaa_;  // the forward pass's multisampled target (display.msaaSamples > 1)

@@ -21,8 +21,10 @@ import matplotlib
 matplotlib.use("Agg")  # no display
 import matplotlib.pyplot as plt  # noqa: E402
 
-COLOURS = {"ssm": "tab:blue", "ssm-unfocused": "tab:gray", "psm": "tab:orange", "lispsm": "tab:green"}
-MARKERS = {"ssm": "s", "ssm-unfocused": "x", "psm": "^", "lispsm": "o"}
+COLOURS = {"ssm": "tab:blue", "ssm-unfocused": "tab:gray", "psm": "tab:orange", "lispsm": "tab:green",
+           "csm": "tab:brown", "csm-ssm": "tab:purple", "csm-stable": "tab:pink", "csm-lispsm": "tab:olive"}
+MARKERS = {"ssm": "s", "ssm-unfocused": "x", "psm": "^", "lispsm": "o",
+           "csm": "P", "csm-ssm": "D", "csm-stable": "v", "csm-lispsm": "*"}
 
 
 def view_name(case):

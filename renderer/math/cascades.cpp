@@ -29,8 +29,11 @@ FixedLightAxes fixedLightAxes(const glm::dvec3& direction) {
 }
 
 // Depth row: dot(p, l) mapped from B's range to [-1, 1], padded so rounding at world offsets of
-// 1e5 keeps every vertex inside (the same concern as the focused fit's padding).
-glm::dvec4 depthRow(const glm::dvec3& l, const std::vector<glm::dvec3>& points) {
+// 1e5 keeps every vertex inside (the same concern as the focused fit's padding). step > 0: the
+// range is widened to whole multiples of step, so it stays put while B's depth range moves
+// inside one step (the stable map's depth units, and with them the slope offset's world size,
+// do not change with every camera move).
+glm::dvec4 depthRow(const glm::dvec3& l, const std::vector<glm::dvec3>& points, double step) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo, mag = 0.0;
     for (const auto& p : points) {
         const double t = glm::dot(p, l);
@@ -41,8 +44,25 @@ glm::dvec4 depthRow(const glm::dvec3& l, const std::vector<glm::dvec3>& points) 
     const double pad = 1e-6 * (hi - lo) + 1e-12 * mag + 1e-300;
     lo -= pad;
     hi += pad;
+    if (step > 0.0 && std::isfinite(lo / step) && std::isfinite(hi / step)) {
+        lo = std::floor(lo / step) * step;
+        hi = std::ceil(hi / step) * step;
+    }
     const double s = 2.0 / (hi - lo);
     return {s * l, -(hi + lo) / (hi - lo)};
+}
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The measured receivers whose eye depth lies in [zLow, zHigh).
+std::vector<SurfacePoint> receiversBetween(const std::vector<SurfacePoint>& all, const glm::dvec3& eye,
+                                           const glm::dvec3& forward, double zLow, double zHigh) {
+    std::vector<SurfacePoint> out;
+    for (const SurfacePoint& r : all) {
+        const double z = glm::dot(r.point - eye, forward);
+        if (z >= zLow && z < zHigh) out.push_back(r);
+    }
+    return out;
 }
 
 std::vector<glm::dvec3> polygonVertices(const PolygonList& faces) {
@@ -96,6 +116,22 @@ std::string validateCascadeParams(const CascadeParams& p) {
         }
     }
     return err.str();
+}
+
+CascadeDepthRange cascadeDepthRange(const ViewFrustum& view, const CascadeParams& p) {
+    CascadeDepthRange r{view.zNear, view.zFar};
+    if (!(p.visibleNear > 0.0 && p.visibleFar > p.visibleNear && std::isfinite(p.visibleFar))) return r;
+    double lo = p.visibleNear, hi = p.visibleFar;
+    if (p.perSplit == SplitParameterization::StableSsm) {
+        const double logStep = std::log(kStableDepthStep);
+        lo = std::exp(std::floor(std::log(lo) / logStep) * logStep);
+        hi = std::exp(std::ceil(std::log(hi) / logStep) * logStep);
+    }
+    r.zNear = std::clamp(lo, view.zNear, view.zFar);
+    r.zFar = std::clamp(hi, view.zNear, view.zFar);
+    // A range too thin to split (everything visible at one depth) keeps the view's.
+    if (!(r.zFar > r.zNear * (1.0 + 1e-6))) r = {view.zNear, view.zFar};
+    return r;
 }
 
 std::vector<double> cascadeSplitDepths(const CascadeParams& p, double zNear, double zFar) {
@@ -156,8 +192,10 @@ ShadowSetup computeStableSsmSetup(const ViewFrustum& view, const ShadowLight& li
         const double cy = std::round(glm::dot(center, axes.y) / texel) * texel;
         const glm::dvec4 rowX{axes.x / halfWidth, -cx / halfWidth};
         const glm::dvec4 rowY{axes.y / halfWidth, -cy / halfWidth};
+        // Depth quantum: a sixteenth of the bound's diameter (camera-invariant like the radius).
+        const double depthStep = halfWidth / 8.0;
         setup.worldToShadowClip =
-            fromRows(rowX, rowY, depthRow(axes.l, polygonVertices(setup.diagnostics.bodyB)), {0, 0, 0, 1});
+            fromRows(rowX, rowY, depthRow(axes.l, polygonVertices(setup.diagnostics.bodyB), depthStep), {0, 0, 0, 1});
         setup.reverseDepthTest = false;
         setup.diagnostics.hasProjectionCenter = false;
         setup.diagnostics.warp = 0.0;
@@ -193,14 +231,21 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
     if (out.error.empty() && !(view.zNear > 0.0 && view.zFar > view.zNear))
         out.error = "cascades need 0 < zNear < zFar";
     if (!out.error.empty()) return out;
-    const std::vector<double> z = cascadeSplitDepths(params, view.zNear, view.zFar);
+    const CascadeDepthRange range = cascadeDepthRange(view, params);
+    const std::vector<double> z = cascadeSplitDepths(params, range.zNear, range.zFar);
     const glm::dvec3 forward = glm::length(view.forward) > 0.0 ? glm::normalize(view.forward) : view.forward;
     for (int i = 0; i < params.splits; ++i) {
         CascadeSplit split;
-        split.zNear = z[i];
+        split.zNear = i == 0 ? view.zNear : z[i];
         split.zFar = z[i + 1];
         const ViewFrustum sub = splitFrustum(view, split.zNear, split.zFar);
         ShadowParams p = params.base;
+        p.receiverPoints = receiversBetween(params.base.receiverPoints, view.eye, forward, i == 0 ? 0.0 : z[i],
+                                            i + 1 == params.splits ? kInfinity : z[i + 1]);
+        // LiSPSM's n from the split's own depths (thesis 9.2.5 per split): the first split's
+        // near plane is the view's, its receivers start at the nearest visible depth.
+        p.lispsm.virtualFar = 0.0;
+        p.lispsm.pseudoNear = i == 0 && range.zNear > view.zNear ? range.zNear : 0.0;
         switch (params.perSplit) {
         case SplitParameterization::Ssm:
             p.method = ShadowMethod::SsmFocused;

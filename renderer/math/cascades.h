@@ -36,8 +36,29 @@ struct CascadeParams {
     std::vector<double> manualSplits;
     SplitParameterization perSplit = SplitParameterization::Ssm;
     int mapResolution = 1024;  // texels per side of one layer: the stable snap needs it
-    ShadowParams base;         // LiSPSM options, PSM guard, polygon collection (method is ignored)
+    // LiSPSM options, PSM guard, polygon collection (method is ignored). base.receiverPoints: the
+    // measured visible surfaces (the depth pre-pass's grid); each split's warp search gets only
+    // those in its own depth range, so it measures its own receivers.
+    ShadowParams base;
+    // The nearest and farthest visible eye depth the depth pre-pass measured (<= 0: unknown).
+    // When known, the splits are spread over this range instead of [zNear, zFar] (a far plane
+    // at 10x the farthest visible depth would otherwise spend the last splits on empty depths),
+    // and the last split ends there. Stable splits use the range snapped outwards to steps of
+    // kStableDepthStep (cascadeDepthRange), so a small camera move does not move them.
+    double visibleNear = 0.0, visibleFar = 0.0;
 };
+
+// Stable splits: the visible range is widened to the next power of this factor (2^(1/4)), so the
+// split positions, and with them the stable spheres, change only when the visible range crosses
+// a step (measured: a split range fitted every frame left flips under a 1-pixel step, issue 13).
+constexpr double kStableDepthStep = 1.189207115002721;
+
+// The eye-depth range the splits are spread over: [zNear, zFar] of the view, narrowed to the
+// visible range when params carries one (snapped outwards for stable splits).
+struct CascadeDepthRange {
+    double zNear = 0.0, zFar = 0.0;
+};
+CascadeDepthRange cascadeDepthRange(const ViewFrustum& view, const CascadeParams& params);
 
 // The practical split depths z_0 = zNear < z_1 < ... < z_N = zFar (eye-space distances).
 std::vector<double> practicalSplitDepths(double zNear, double zFar, int splits, double lambda);
@@ -65,7 +86,9 @@ struct FrustumSphere {
 FrustumSphere frustumSliceSphere(double fovY, double aspect, double zNear, double zFar);
 
 struct CascadeSplit {
-    double zNear = 0.0, zFar = 0.0;  // eye distances of this split
+    // Eye distances of this split (its sub-frustum V_i: the first starts at the view's near
+    // plane, so geometry nearer than the measured range still has a map).
+    double zNear = 0.0, zFar = 0.0;
     ShadowSetup setup;
     // World size of one texel at the split's centre (the map's x direction): the per-split scale
     // of the bias and of the normal offset.

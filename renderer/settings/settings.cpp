@@ -56,7 +56,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear, guard)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces,
                                    normalOffset)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CascadeSettings, enabled, splits, lambda, perSplit, blendBand, manualSplits,
-                                   colorSplits)
+                                   colorSplits, fitVisibleDepth)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, edgeAwareBlur,
                                    blurStrength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DisplaySettings, exposureEv, toneMapping, hemisphereAmbient, msaaSamples,

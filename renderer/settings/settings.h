@@ -95,6 +95,9 @@ struct CascadeSettings {
     double blendBand = 0.0;            // fraction of a split's depth range (at its far end) blended into the next
     std::vector<double> manualSplits;  // empty: practical scheme; else splits - 1 fractions of [near, far]
     bool colorSplits = false;          // tint each split's pixels (red, green, blue, yellow)
+    // Spread the splits over the visible depth range the depth pre-pass measures (and give each
+    // split's LiSPSM search the measured receivers of its range); off: over [near, far].
+    bool fitVisibleDepth = true;
     bool operator==(const CascadeSettings&) const = default;
 };
 

@@ -202,6 +202,109 @@ TEST(CascadeSetups, LaterSplitsHaveLargerTexels) {
     for (int i = 1; i < 4; ++i) EXPECT_GT(cs.splits[i].texelWorldSize, cs.splits[i - 1].texelWorldSize);
 }
 
+// --- The visible depth range and the measured receivers (depth pre-pass) ---------------------
+
+TEST(CascadeVisibleRange, SplitsCoverTheVisibleRangeAndTheFirstStartsAtTheNearPlane) {
+    const ViewFrustum view = groundView();  // near 0.5, far 120
+    CascadeParams p = cascade(SplitParameterization::Ssm);
+    p.visibleNear = 2.0;
+    p.visibleFar = 40.0;
+    const CascadeDepthRange r = cascadeDepthRange(view, p);
+    EXPECT_EQ(r.zNear, 2.0);
+    EXPECT_EQ(r.zFar, 40.0);
+    const CascadeSetup cs = computeCascadeSetup(view, sun({0.3, -1, 0.2}), terrain(), p);
+    ASSERT_EQ(cs.splits.size(), 4u);
+    const auto z = practicalSplitDepths(2.0, 40.0, 4, 0.5);
+    EXPECT_EQ(cs.splits[0].zNear, view.zNear) << "geometry nearer than the measured range still has a map";
+    for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(cs.splits[i].zFar, z[i + 1]);
+    // Unknown or unusable ranges keep the view's.
+    for (auto [lo, hi] : {std::pair{-1.0, -1.0}, {5.0, 5.0}, {8.0, 2.0}, {0.0, 30.0}}) {
+        p.visibleNear = lo;
+        p.visibleFar = hi;
+        const CascadeDepthRange v = cascadeDepthRange(view, p);
+        EXPECT_EQ(v.zNear, view.zNear) << lo << " " << hi;
+        EXPECT_EQ(v.zFar, view.zFar) << lo << " " << hi;
+    }
+    p.visibleNear = 0.01;  // beyond the frustum: clamped to it
+    p.visibleFar = 1e4;
+    EXPECT_EQ(cascadeDepthRange(view, p).zNear, view.zNear);
+    EXPECT_EQ(cascadeDepthRange(view, p).zFar, view.zFar);
+}
+
+TEST(CascadeVisibleRange, StableSplitsSnapTheRangeOutwardsToFixedSteps) {
+    const ViewFrustum view = groundView();
+    CascadeParams p = cascade(SplitParameterization::StableSsm);
+    int changes = 0;
+    CascadeDepthRange last{};
+    for (int i = 0; i < 100; ++i) {
+        // The visible range drifting by 0.1 % per frame, as under 1-pixel camera steps.
+        p.visibleNear = 2.0 * (1.0 + 1e-3 * i);
+        p.visibleFar = 40.0 * (1.0 - 1e-3 * i);
+        const CascadeDepthRange r = cascadeDepthRange(view, p);
+        EXPECT_LE(r.zNear, p.visibleNear);
+        EXPECT_GE(r.zFar, p.visibleFar);
+        EXPECT_GT(r.zNear * kStableDepthStep, p.visibleNear * (1 - 1e-12)) << "at most one step wider";
+        EXPECT_NEAR(std::log(r.zFar) / std::log(kStableDepthStep),
+                    std::round(std::log(r.zFar) / std::log(kStableDepthStep)), 1e-9);
+        if (i > 0 && (r.zNear != last.zNear || r.zFar != last.zFar)) ++changes;
+        last = r;
+    }
+    EXPECT_LE(changes, 2) << "a 10 % drift crosses at most one step at each end";
+    // Focused splits follow the measured range exactly (the control).
+    p.perSplit = SplitParameterization::Ssm;
+    EXPECT_EQ(cascadeDepthRange(view, p).zFar, p.visibleFar);
+}
+
+TEST(CascadeVisibleRange, EachLispsmSplitSearchesOnlyTheReceiversOfItsRange) {
+    const ViewFrustum view = groundView();
+    const ShadowLight light = sun({0.3, -1, 0.2});
+    CascadeParams p = cascade(SplitParameterization::Lispsm);
+    p.visibleNear = 2.0;
+    p.visibleFar = 60.0;
+    // Ground points straight ahead at depths 3 .. 57, normals up (lit, not grazing).
+    for (double z = 3.0; z < 58.0; z += 2.0) {
+        const glm::dvec3 ahead = view.eye + view.forward * z;
+        p.base.receiverPoints.push_back({{ahead.x, 0.0, ahead.z}, {0, 1, 0}});
+    }
+    const CascadeSetup cs = computeCascadeSetup(view, light, terrain(), p);
+    ASSERT_EQ(cs.splits.size(), 4u);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < cs.splits.size(); ++i) {
+        const double lo = i == 0 ? 0.0 : cs.splits[i].zNear, hi = i == 3 ? 1e30 : cs.splits[i].zFar;
+        int expected = 0;
+        for (const SurfacePoint& r : p.base.receiverPoints) {
+            const double z = glm::dot(r.point - view.eye, view.forward);
+            expected += z >= lo && z < hi;
+        }
+        ASSERT_GT(expected, 0) << "split " << i;
+        EXPECT_EQ(cs.splits[i].setup.diagnostics.warpSamples, expected) << "split " << i;
+        total += std::size_t(expected);
+    }
+    EXPECT_EQ(total, p.base.receiverPoints.size()) << "every receiver belongs to exactly one split";
+}
+
+TEST(StableSsm, DepthRowStaysPutUnderSmallCameraMoves) {
+    // The depth range is snapped to whole steps of the bound: 1 cm camera steps leave the whole
+    // matrix unchanged in nearly every frame (fitted every frame, it changed in every one).
+    const ShadowLight light = sun({0.35, -1, 0.25});
+    const ViewFrustum reference = groundView();
+    CascadeSetup last = computeCascadeSetup(reference, light, terrain(), cascade(SplitParameterization::StableSsm));
+    int changed = 0, compared = 0;
+    for (int step = 1; step <= 50; ++step) {
+        ViewFrustum moved = reference;
+        moved.eye.x += 0.01 * step;
+        const CascadeSetup cs = computeCascadeSetup(moved, light, terrain(), cascade(SplitParameterization::StableSsm));
+        for (int i = 0; i < 4; ++i) {
+            ++compared;
+            const glm::dmat4& a = cs.splits[i].setup.worldToShadowClip;
+            const glm::dmat4& b = last.splits[i].setup.worldToShadowClip;
+            changed += a[0][2] != b[0][2] || a[1][2] != b[1][2] || a[2][2] != b[2][2] || a[3][2] != b[3][2];
+        }
+        last = cs;
+    }
+    EXPECT_LE(changed, compared / 10) << changed << " of " << compared << " depth rows changed";
+}
+
 // --- Stable SSM ----------------------------------------------------------------------------------
 
 TEST(StableSsm, FrustumSphereHoldsTheSliceCorners) {

@@ -131,6 +131,45 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     EXPECT_FALSE(firstFrame(scene, s).shadowMapReused);
 }
 
+// Cascades (issue 13): each layer is reused on its own. Skips on and off give the same pixels for
+// every per-split parameterisation; a still camera reuses every layer; a moved light re-renders
+// them all; a camera move that changes only the far splits keeps the near ones (stable splits:
+// their texel grid is fixed to the world, so a move along the view axis within one texel of the
+// near layers' grid keeps those).
+TEST_F(FrameSkips, CascadeLayersAreReusedWhileTheirSplitStays) {
+    const Scene* forest = loaded(SHADOWLAB_BUILD_SCENES "/forest.glb");
+    ASSERT_TRUE(forest);
+    std::vector<Settings> views;
+    for (SplitParameterization p : {SplitParameterization::Ssm, SplitParameterization::StableSsm,
+                                    SplitParameterization::Lispsm}) {
+        Settings s;
+        s.camera = cameraFromScene(forest->cameras.front(), s.camera);
+        s.shadowMapSize = 256;
+        s.csm.enabled = true;
+        s.csm.perSplit = p;
+        if (p == SplitParameterization::Lispsm) s.filter.blurIterations = 1;
+        views.push_back(s);
+    }
+    EXPECT_EQ(expectSameImages(*forest, views), int(views.size()));
+
+    Settings s = withSkips(views[1], true);
+    FrameStats stats;
+    settled(*forest, s, &stats);
+    EXPECT_TRUE(stats.shadowMapReused);
+    EXPECT_EQ(stats.cascadeLayersReused, s.csm.splits);
+    EXPECT_EQ(stats.shadowPass.drawCalls, 0u);
+    Settings moved = s;
+    moved.light.source = LightSource::Sun;
+    moved.light.azimuthDeg += 5.0;
+    moved.skip.asyncDepthReadback = false;  // this frame's depth range, no estimate
+    stats = firstFrame(*forest, moved);
+    EXPECT_FALSE(stats.shadowMapReused);
+    EXPECT_EQ(stats.cascadeLayersReused, 0);
+    EXPECT_GT(stats.shadowPass.drawCalls, 0u);
+    stats = firstFrame(*forest, moved);  // and still again: all reused
+    EXPECT_EQ(stats.cascadeLayersReused, moved.csm.splits);
+}
+
 TEST_F(FrameSkips, EachViewOfASplitCompareKeepsItsOwnMap) {
     const Scene scene = planeBoxScene();
     Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});

@@ -310,11 +310,16 @@ TEST_F(Acne, EveryBiasCombinationRendersWithoutGlErrors) {
                 }
 }
 
-// Eye-space blur (thesis 6.3): N = 4 changes only pixels near shadow boundaries of the N = 0 image.
-TEST_F(Acne, BlurChangesOnlyPixelsNearShadowBoundaries) {
+// Eye-space blur (thesis 6.3): N = 4 changes only pixels near shadow boundaries of the N = 0 image,
+// with one map and with cascades (the shadow term pass then looks up the split's layer).
+class Blur : public RenderTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(Blur, ChangesOnlyPixelsNearShadowBoundaries) {
     const Scene scene = planeBoxScene(fromSide());
     Settings s = shadowView(ShadowMethod::Lispsm);
     s.filter.filter = ShadowFilter::Pcf2x2Hardware;
+    s.csm.enabled = GetParam();
+    s.csm.perSplit = SplitParameterization::Lispsm;
     const RgbaImage sharp = render(scene, s);
     s.filter.blurIterations = 4;
     FrameStats stats;
@@ -353,7 +358,17 @@ TEST_F(Acne, BlurChangesOnlyPixelsNearShadowBoundaries) {
         }
     EXPECT_GT(changed, 50) << "the blur must soften the shadow outline";
     EXPECT_EQ(changedFar, 0) << "pixels far from any shadow boundary changed";
+    // Away from the outline the blurred image keeps the ray cast's shadow and light.
+    const Classification k = classify(blurred, s, fromSide(), 0.4);
+    ASSERT_GT(k.shadow, 15);
+    EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100 + 1);
+    EXPECT_LT(k.litButDark, k.lit * 2 / 100 + 1);
 }
+
+INSTANTIATE_TEST_SUITE_P(OneMapAndCascades, Blur, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                             return std::string(info.param ? "csm" : "one_map");
+                         });
 
 TEST_F(Acne, BlurOffAllocatesNothingAndSameSettingsRenderIdentically) {
     const Scene scene = planeBoxScene(fromSide());
