@@ -43,18 +43,19 @@ struct CascadeParams {
     // The nearest and farthest visible eye depth the depth pre-pass measured (<= 0: unknown).
     // When known, the splits are spread over this range instead of [zNear, zFar] (a far plane
     // at 10x the farthest visible depth would otherwise spend the last splits on empty depths),
-    // and the last split ends there. Stable splits use the range snapped outwards to steps of
-    // kStableDepthStep (cascadeDepthRange), so a small camera move does not move them.
+    // and the last split ends there. Stable splits keep the view's near plane and use the far
+    // end snapped outwards to steps of kStableDepthStep (cascadeDepthRange), so a small camera
+    // move does not move them.
     double visibleNear = 0.0, visibleFar = 0.0;
 };
 
-// Stable splits: the visible range is widened to the next power of this factor (2^(1/4)), so the
-// split positions, and with them the stable spheres, change only when the visible range crosses
-// a step (measured: a split range fitted every frame left flips under a 1-pixel step, issue 13).
+// Stable splits: the farthest visible depth is widened to the next power of this factor
+// (2^(1/4)), so the split positions, and with them the stable spheres, change only when it
+// crosses a step (a split range fitted every frame moves every split with every camera move).
 constexpr double kStableDepthStep = 1.189207115002721;
 
 // The eye-depth range the splits are spread over: [zNear, zFar] of the view, narrowed to the
-// visible range when params carries one (snapped outwards for stable splits).
+// visible range when params carries one (stable splits: only the far end, snapped outwards).
 struct CascadeDepthRange {
     double zNear = 0.0, zFar = 0.0;
 };
