@@ -170,6 +170,32 @@ TEST_F(FrameSkips, CascadeLayersAreReusedWhileTheirSplitStays) {
     EXPECT_EQ(stats.cascadeLayersReused, moved.csm.splits);
 }
 
+// Stable cascades under small camera steps (issue 13, shimmering): the map's grid is fixed to the
+// world and its split ranges and depth rows are snapped, so a 1 cm sideways step leaves most
+// frames' layers exactly as they were (the reuse key matches: same matrix, depth range and
+// casters). The focused splits re-fit to every step (the control).
+TEST_F(FrameSkips, StableCascadesKeepTheirLayersUnderCentimetreSteps) {
+    const Scene* forest = loaded(SHADOWLAB_BUILD_SCENES "/forest.glb");
+    ASSERT_TRUE(forest);
+    auto reusedFrames = [&](SplitParameterization perSplit) {
+        Settings s;
+        s.camera = cameraFromScene(forest->cameras.front(), s.camera);
+        s.shadowMapSize = 256;
+        s.csm.enabled = true;
+        s.csm.perSplit = perSplit;
+        s.skip.asyncDepthReadback = false;  // each frame's own visible depth, as the temporal instrument
+        render(*forest, s);                 // creates renderer and target
+        int reused = 0;
+        for (int step = 1; step <= 10; ++step) {
+            s.camera.position.x += 0.01;
+            reused += firstFrame(*forest, s).cascadeLayersReused == s.csm.splits ? 1 : 0;
+        }
+        return reused;
+    };
+    EXPECT_GE(reusedFrames(SplitParameterization::StableSsm), 7);
+    EXPECT_EQ(reusedFrames(SplitParameterization::Ssm), 0);
+}
+
 TEST_F(FrameSkips, EachViewOfASplitCompareKeepsItsOwnMap) {
     const Scene scene = planeBoxScene();
     Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
