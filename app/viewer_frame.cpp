@@ -93,16 +93,24 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
     const LightFrame light = resolveLight(scene, settings.light, seconds);
     const bool haveMap = result.stats.shadowMapSize > 0 && renderer.lastShadowSetup().valid;
     const ShadowSetup& setup = renderer.lastShadowSetup();
+    // Cascades (issue 13): every layer in the shadow-map inset, every split's slice and B_i in the
+    // observer, in the split colours of csm.colorSplits. The light view shows the first valid split.
+    const CascadeSetup& cascades = renderer.lastCascadeSetup();
+    const bool cascaded = !cascades.splits.empty() && renderer.cascadeMapTexture() != 0;
     auto noteFor = [&](const InsetRect& r, const std::string& title) {
         result.captions.push_back({float(r.x + 4), float(r.y + 4), title});
     };
     if (!layout.shadowMapInset.empty()) {
         const InsetRect r = toGl(layout.shadowMapInset, fbHeight);
         overlays.drawFrame(0, r);
-        if (haveMap)
-            overlays.drawDepthInset(0, r, renderer.shadowMapTexture(), setup.reverseDepthTest,
-                                    {float(settings.overlays.depthWindowLow), float(settings.overlays.depthWindowHigh)});
-        noteFor(layout.shadowMapInset, haveMap ? "shadow map" : "no shadow map");
+        const glm::vec2 window{float(settings.overlays.depthWindowLow), float(settings.overlays.depthWindowHigh)};
+        if (haveMap && cascaded)
+            overlays.drawDepthLayersInset(0, r, renderer.cascadeMapTexture(), renderer.cascadeMapLayers(), window);
+        else if (haveMap)
+            overlays.drawDepthInset(0, r, renderer.shadowMapTexture(), setup.reverseDepthTest, window);
+        noteFor(layout.shadowMapInset, !haveMap  ? "no shadow map"
+                                       : cascaded ? "shadow map layers, near to far"
+                                                  : "shadow map");
     }
     if (!layout.lightViewInset.empty()) {
         const InsetRect r = toGl(layout.lightViewInset, fbHeight);
@@ -116,20 +124,24 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
                 overlayWires(setup.diagnostics, settings.overlays, viewFrustum0, scene.bounds, light.direction, marker),
                 m);
         }
-        noteFor(layout.lightViewInset, haveMap ? "light view" : "no light view");
+        noteFor(layout.lightViewInset, !haveMap ? "no light view" : cascaded ? "light view (first split)" : "light view");
     }
     if (!layout.observerInset.empty() && renderer.gpuScene()) {
         const InsetRect r = toGl(layout.observerInset, fbHeight);
         overlays.drawFrame(0, r);
-        const ShadowDiagnostics& d = result.stats.shadow;
+        // With cascades the framing covers every B_i, and B and V are drawn per split.
+        const ShadowDiagnostics d = cascaded ? cascadeFramingDiagnostics(cascades) : result.stats.shadow;
         const ObserverCamera observer =
             observerCamera(d, viewFrustum0, scene.bounds, observerView.yawDeg, observerView.pitchDeg,
                            observerView.distance, double(r.width) / double(r.height));
         overlays.drawScene(0, r, scene, *renderer.gpuScene(), observer.viewProjection(), light.direction, false);
-        overlays.drawWires(
-            0, r,
-            overlayWires(d, settings.overlays, viewFrustum0, scene.bounds, light.direction, observer.radius * 0.04),
-            observer.viewProjection());
+        OverlaySettings shared = settings.overlays;
+        if (cascaded) shared.drawB = shared.drawV = false;
+        std::vector<WireSet> wires =
+            overlayWires(d, shared, viewFrustum0, scene.bounds, light.direction, observer.radius * 0.04);
+        if (cascaded)
+            for (WireSet& w : cascadeWires(cascades, settings.overlays, viewFrustum0)) wires.push_back(std::move(w));
+        overlays.drawWires(0, r, wires, observer.viewProjection());
         noteFor(layout.observerInset, "observer");
     }
 }

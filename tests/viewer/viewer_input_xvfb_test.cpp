@@ -224,5 +224,43 @@ TEST(ViewerInputUnderXvfb, LimitsAndSceneNoticesReachTheViewer) {
     EXPECT_NE(readFile(log).find("note: light.sceneLight = 5"), std::string::npos) << readFile(log);
 }
 
+TEST(ViewerInputUnderXvfb, WithCascadesTheShadowMapInsetShowsEveryLayerInItsSplitColour) {
+    // 960 x 540 without panels, three splits: the inset is three squares of (480 - 6) / 3 = 158 px
+    // (capped by the default 180) at (12, 370), each under a strip in its split's colour.
+    const fs::path dir = fs::path(VIEWER_TEST_DIR);
+    fs::create_directories(dir);
+    const fs::path view = dir / "csm.json", shot = dir / "csm.png", log = dir / "csm.log";
+    std::ofstream(view) << R"({"method": "lispsm", "csm": {"enabled": true, "splits": 3},
+        "animation": {"playing": false, "time": 0.0},
+        "overlays": {"shadowMapInset": true, "lightViewInset": false, "observerInset": true}})";
+    fs::remove(shot);
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+                            " " + quoted(PLANE_BOX_SCENE) + " --view " + quoted(view) +
+                            " --frames 3 --width 960 --height 540 --no-ui --screenshot " + quoted(shot) + " > " +
+                            quoted(log) + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << readFile(log);
+    RgbaImage image;
+    std::string error;
+    ASSERT_TRUE(readPng(shot, image, error)) << error;
+    const int side = 158, x0 = 12, top = 540 - 12 - side;
+    const glm::ivec3 colours[3] = {{255, 115, 115}, {115, 255, 115}, {115, 153, 255}};  // cascadeColor(i) x 255
+    for (int i = 0; i < 3; ++i) {
+        const glm::ivec4 strip(image.at(x0 + i * (side + 3) + side / 2, top + 1));
+        EXPECT_NEAR(strip.r, colours[i].r, 3) << "split " << i;
+        EXPECT_NEAR(strip.g, colours[i].g, 3) << "split " << i;
+        EXPECT_NEAR(strip.b, colours[i].b, 3) << "split " << i;
+    }
+    // The observer (right of the inset) draws the splits' B_i in those colours too.
+    int coloured[3] = {0, 0, 0};
+    for (int y = 300; y < 540; ++y)
+        for (int x = x0 + 3 * side + 12; x < 960; ++x) {
+            const glm::ivec4 p(image.at(x, y));
+            for (int i = 0; i < 3; ++i)
+                coloured[i] += std::abs(p.r - colours[i].r) < 4 && std::abs(p.g - colours[i].g) < 4 &&
+                               std::abs(p.b - colours[i].b) < 4;
+        }
+    for (int i = 0; i < 3; ++i) EXPECT_GT(coloured[i], 20) << "split " << i << " has no wires in the observer";
+}
+
 }  // namespace
 }  // namespace shadowlab
