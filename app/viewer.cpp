@@ -224,7 +224,8 @@ void syncGroundPlane(ViewerState& state, Renderer& renderer) {
     } else {
         state.groundPlane = addGroundPlane(*state.scene);
     }
-    renderer.setScene(*state.scene);
+    renderer.setScene(*state.scene, true);  // a re-upload streams its textures too
+    state.texturesTotal = state.texturesPending = state.scene->textures.size();
     state.status.sceneTriangles = state.scene->triangleCount();
 }
 
