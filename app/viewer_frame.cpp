@@ -1,5 +1,6 @@
 #include "viewer_frame.h"
 
+#include "settings/method_choice.h"
 #include "view_state.h"
 #include "widgets.h"
 
@@ -17,9 +18,17 @@ bool contains(const InsetRect& r, double x, double y) {
 std::vector<Pane> splitPanes(const Settings& settings) {
     std::vector<Pane> panes;
     const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
+    // With cascades on, only the first view of the current method renders them: the others show
+    // their one-map method (else every view drew the same cascades under different names).
+    bool cascadesShown = !settings.csm.enabled;
     for (ShadowMethod m : methods) {
-        Pane p{settings, methods.size() > 1 ? methodName(m) : ""};
+        Pane p{settings, ""};
         p.settings.method = m;
+        if (methods.size() > 1) {
+            p.settings.csm.enabled = !cascadesShown && m == settings.method;
+            cascadesShown |= p.settings.csm.enabled;
+            p.caption = methodChoiceName(methodChoiceOf(p.settings));
+        }
         panes.push_back(std::move(p));
     }
     return panes;

@@ -39,7 +39,8 @@ struct Pane {
     Settings settings;
     std::string caption;
 };
-// The split-compare views of `settings` (one pane when split compare is off).
+// The split-compare views of `settings` (one pane when split compare is off). With csm on, only
+// the first view of settings.method renders cascades (captioned "csm-..."), the others one map.
 std::vector<Pane> splitPanes(const Settings& settings);
 
 // The aliasing error of one split view, live while the aliasing view is on (item "numbers on

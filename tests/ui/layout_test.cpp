@@ -145,5 +145,32 @@ TEST(ViewerLayout, WithCascadesTheShadowMapInsetHasASquarePerLayer) {
     EXPECT_LE(big.shadowMapInset.x + big.shadowMapInset.width, big.viewWidth);
 }
 
+// Issue 13: with csm on, a split compare of ssm | psm | lispsm used to render the same cascades in
+// all three views under three names.
+TEST(SplitPanes, WithCascadesOnlyTheCurrentMethodsViewRendersThem) {
+    Settings s;
+    s.method = ShadowMethod::Lispsm;
+    s.csm.enabled = true;
+    s.csm.perSplit = SplitParameterization::Lispsm;
+    s.compare.count = 3;
+    s.compare.methods = {ShadowMethod::SsmFocused, ShadowMethod::Lispsm, ShadowMethod::Lispsm};
+    const std::vector<app::Pane> panes = app::splitPanes(s);
+    ASSERT_EQ(panes.size(), 3u);
+    EXPECT_FALSE(panes[0].settings.csm.enabled);
+    EXPECT_EQ(panes[0].caption, "ssm");
+    EXPECT_TRUE(panes[1].settings.csm.enabled);
+    EXPECT_EQ(panes[1].caption, "csm-lispsm");
+    EXPECT_FALSE(panes[2].settings.csm.enabled);  // the second lispsm view: one map, to compare with
+    EXPECT_EQ(panes[2].caption, "lispsm");
+    // Without cascades nothing changes; a single view keeps its cascades and has no caption.
+    s.csm.enabled = false;
+    for (const app::Pane& p : app::splitPanes(s)) EXPECT_FALSE(p.settings.csm.enabled);
+    s.csm.enabled = true;
+    s.compare.count = 1;
+    ASSERT_EQ(app::splitPanes(s).size(), 1u);
+    EXPECT_TRUE(app::splitPanes(s)[0].settings.csm.enabled);
+    EXPECT_EQ(app::splitPanes(s)[0].caption, "");
+}
+
 }  // namespace
 }  // namespace shadowlab
