@@ -62,24 +62,39 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
         bool on;
         InsetKind kind;
         int aspectNum, aspectDen;  // width : height
-        int squares = 1;           // the shadow map with cascades: one square per layer, side by side
+        int squares = 1;           // with cascades: one square per layer, side by side, kLayerGap apart
+        int width(int height) const {
+            return height * aspectNum / aspectDen * squares + kLayerGap * (squares - 1);
+        }
     };
     const int layers = settings.csm.enabled ? std::clamp(settings.csm.splits, 1, 4) : 1;
     std::vector<Slot> slots = {{&l.shadowMapInset, settings.overlays.shadowMapInset, InsetKind::ShadowMap, 1, 1, layers},
-                               {&l.lightViewInset, settings.overlays.lightViewInset, InsetKind::LightView, 1, 1},
+                               {&l.lightViewInset, settings.overlays.lightViewInset, InsetKind::LightView, 1, 1, layers},
                                {&l.observerInset, settings.overlays.observerInset, InsetKind::Observer, 4, 3}};
     // The enlarged inset first, at the left edge (at 4:3 and 3/4 of the width it still fits).
     std::stable_partition(slots.begin(), slots.end(), [&](const Slot& s) { return s.kind == enlarged; });
+    // Without an enlarged inset all must fit in one row: shrink them together when they do not
+    // (cascade layers side by side make the shadow-map and light-view insets wide).
+    int smallSide = side;
+    if (enlarged == InsetKind::None) {
+        int used = 0, gaps = 0, count = 0;
+        for (const Slot& slot : slots)
+            if (slot.on) {
+                used += slot.width(side);
+                gaps += kLayerGap * (slot.squares - 1);
+                ++count;
+            }
+        const int avail = l.viewWidth - 2 * margin - std::max(0, count - 1) * (margin + 4);
+        if (used > avail && used > gaps)
+            smallSide = std::max(16, int(double(side) * double(avail - gaps) / double(used - gaps)));
+    }
     int x = margin;
     for (const Slot& slot : slots) {
         if (!slot.on) continue;
-        int height = slot.kind == enlarged ? bigSide : side;
-        int width = height * slot.aspectNum / slot.aspectDen;
-        if (slot.squares > 1) {  // kLayerGap (overlay.h) between the squares; at most half the area unless enlarged
-            const int room = slot.kind == enlarged ? l.viewWidth - 2 * margin : l.viewWidth / 2;
-            height = std::max(16, std::min(height, (room - kLayerGap * (slot.squares - 1)) / slot.squares));
-            width = height * slot.squares + kLayerGap * (slot.squares - 1);
-        }
+        int height = slot.kind == enlarged ? bigSide : smallSide;
+        if (slot.kind == enlarged && slot.squares > 1)
+            height = std::min(height, (l.viewWidth - 2 * margin - kLayerGap * (slot.squares - 1)) / slot.squares);
+        const int width = slot.width(height);
         // Beside an enlarged inset the small ones are left out once they no longer fit.
         if (enlarged != InsetKind::None && slot.kind != enlarged && x + width > l.viewWidth - margin) continue;
         *slot.rect = {x, fbHeight - height - margin, width, height};
@@ -92,6 +107,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The scene as the light sees it through `setup`'s matrix, with the overlay wires in it.
+void drawLightView(const OverlayRenderer& overlays, const Renderer& renderer, const Scene& scene, const InsetRect& r,
+                   const ShadowSetup& setup, const Settings& settings, const ViewFrustum& view,
+                   const glm::dvec3& lightDirection) {
+    const glm::dmat4& m = setup.worldToShadowClip;  // w > 0 over B by contract
+    overlays.drawScene(0, r, scene, *renderer.gpuScene(), m, lightDirection, setup.reverseDepthTest);
+    const double marker = 0.02 * std::max(1e-3, glm::length(setup.bodyBounds.extent()));
+    overlays.drawWires(0, r, overlayWires(setup.diagnostics, settings.overlays, view, scene.bounds, lightDirection, marker),
+                       m);
+}
+
 void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, const Layout& layout,
                 const ui::ObserverView& observerView, ViewsResult& result, double seconds) {
     Renderer& renderer = tools.renderer;
@@ -103,7 +129,7 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
     const bool haveMap = result.stats.shadowMapSize > 0 && renderer.lastShadowSetup().valid;
     const ShadowSetup& setup = renderer.lastShadowSetup();
     // Cascades (issue 13): every layer in the shadow-map inset, every split's slice and B_i in the
-    // observer, in the split colours of csm.colorSplits. The light view shows the first valid split.
+    // observer, in the split colours of csm.colorSplits; the light view of every split side by side.
     const CascadeSetup& cascades = renderer.lastCascadeSetup();
     const bool cascaded = !cascades.splits.empty() && renderer.cascadeMapTexture() != 0;
     auto noteFor = [&](const InsetRect& r, const std::string& title) {
@@ -124,16 +150,16 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
     if (!layout.lightViewInset.empty()) {
         const InsetRect r = toGl(layout.lightViewInset, fbHeight);
         overlays.drawFrame(0, r);
-        if (haveMap && renderer.gpuScene()) {
-            const glm::dmat4& m = setup.worldToShadowClip;  // w > 0 over B by contract
-            overlays.drawScene(0, r, scene, *renderer.gpuScene(), m, light.direction, setup.reverseDepthTest);
-            const double marker = 0.02 * std::max(1e-3, glm::length(setup.bodyBounds.extent()));
-            overlays.drawWires(
-                0, r,
-                overlayWires(setup.diagnostics, settings.overlays, viewFrustum0, scene.bounds, light.direction, marker),
-                m);
+        if (haveMap && renderer.gpuScene() && cascaded) {
+            const std::vector<InsetRect> squares = layerSquares(r, int(cascades.splits.size()));
+            for (std::size_t i = 0; i < squares.size(); ++i)
+                if (cascades.splits[i].setup.valid)
+                    drawLightView(overlays, renderer, scene, squares[i], cascades.splits[i].setup, settings,
+                                  viewFrustum0, light.direction);
+        } else if (haveMap && renderer.gpuScene()) {
+            drawLightView(overlays, renderer, scene, r, setup, settings, viewFrustum0, light.direction);
         }
-        noteFor(layout.lightViewInset, !haveMap ? "no light view" : cascaded ? "light view (first split)" : "light view");
+        noteFor(layout.lightViewInset, !haveMap ? "no light view" : cascaded ? "light views, near to far" : "light view");
     }
     if (!layout.observerInset.empty() && renderer.gpuScene()) {
         const InsetRect r = toGl(layout.observerInset, fbHeight);

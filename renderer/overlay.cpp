@@ -131,18 +131,24 @@ void OverlayRenderer::drawDepthInset(GLuint framebuffer, const InsetRect& rect, 
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+std::vector<InsetRect> layerSquares(const InsetRect& rect, int layers) {
+    std::vector<InsetRect> squares;
+    if (rect.empty() || layers <= 0) return squares;
+    const int side = std::min(rect.height, (rect.width - kLayerGap * (layers - 1)) / layers);
+    if (side < 4) return squares;
+    for (int i = 0; i < layers; ++i) squares.push_back({rect.x + i * (side + kLayerGap), rect.y, side, side});
+    return squares;
+}
+
 std::vector<InsetRect> OverlayRenderer::drawDepthLayersInset(GLuint framebuffer, const InsetRect& rect,
                                                              GLuint arrayTexture, int layers, glm::vec2 window) const {
-    std::vector<InsetRect> squares;
-    if (rect.empty() || arrayTexture == 0 || layers <= 0) return squares;
-    const int gap = kLayerGap;
-    const int side = std::min(rect.height, (rect.width - gap * (layers - 1)) / layers);
-    if (side < 4) return squares;
+    if (arrayTexture == 0) return {};
+    const std::vector<InsetRect> squares = layerSquares(rect, layers);
+    if (squares.empty()) return squares;
     GlStateGuard guard;
-    const int strip = std::max(2, side / 24);
-    for (int i = 0; i < layers; ++i) {
-        const InsetRect square{rect.x + i * (side + gap), rect.y, side, side};
-        squares.push_back(square);
+    const int strip = std::max(2, squares[0].width / 24);
+    for (int i = 0; i < int(squares.size()); ++i) {
+        const InsetRect& square = squares[std::size_t(i)];
         enterRect(framebuffer, square);
         depthLayers_.use();
         depthLayers_.set("uReversed", 0);  // cascades never reverse the test (only PSM's inverted light does)

@@ -26,6 +26,9 @@ struct InsetRect {
 
 // Pixels between the squares of drawDepthLayersInset.
 constexpr int kLayerGap = 3;
+// The squares of `layers` side by side in `rect`, left to right, kLayerGap apart (none when a
+// square would be under 4 pixels).
+std::vector<InsetRect> layerSquares(const InsetRect& rect, int layers);
 
 class OverlayRenderer {
 public:

@@ -131,18 +131,24 @@ TEST(ViewerLayout, AClickedInsetIsEnlargedAndTheOthersStayBesideIt) {
     }
 }
 
-TEST(ViewerLayout, WithCascadesTheShadowMapInsetHasASquarePerLayer) {
+TEST(ViewerLayout, WithCascadesTheMapAndLightInsetsHaveASquarePerLayerAndAllFit) {
     Settings s = allInsets();
     s.csm.enabled = true;
-    s.csm.splits = 3;
-    const app::Layout l = app::layoutFrame(1280, 720, true, s);
-    const InsetRect& r = l.shadowMapInset;
-    EXPECT_EQ(r.width, 3 * r.height + 2 * kLayerGap);  // three squares, two gaps
-    EXPECT_LE(r.width, l.viewWidth / 2);
-    EXPECT_GE(l.lightViewInset.x, r.x + r.width);  // the next inset starts after it
-    const app::Layout big = app::layoutFrame(1280, 720, true, s, 0, app::InsetKind::ShadowMap);
-    EXPECT_GT(big.shadowMapInset.height, r.height);
-    EXPECT_LE(big.shadowMapInset.x + big.shadowMapInset.width, big.viewWidth);
+    for (int splits : {2, 3, 4}) {
+        s.csm.splits = splits;
+        for (int width : {1280, 800}) {
+            const app::Layout l = app::layoutFrame(width, 720, true, s);
+            for (const InsetRect* r : {&l.shadowMapInset, &l.lightViewInset})
+                EXPECT_EQ(r->width, splits * r->height + (splits - 1) * kLayerGap) << splits << " " << width;
+            EXPECT_GE(l.lightViewInset.x, l.shadowMapInset.x + l.shadowMapInset.width);
+            EXPECT_GE(l.observerInset.x, l.lightViewInset.x + l.lightViewInset.width);
+            // Shrunk together so the row stays inside the 3D area.
+            EXPECT_LE(l.observerInset.x + l.observerInset.width, l.viewWidth) << splits << " " << width;
+            const app::Layout big = app::layoutFrame(width, 720, true, s, 0, app::InsetKind::ShadowMap);
+            EXPECT_GT(big.shadowMapInset.height, l.shadowMapInset.height);
+            EXPECT_LE(big.shadowMapInset.x + big.shadowMapInset.width, big.viewWidth);
+        }
+    }
 }
 
 // Issue 13: with csm on, a split compare of ssm | psm | lispsm used to render the same cascades in

@@ -225,8 +225,9 @@ TEST(ViewerInputUnderXvfb, LimitsAndSceneNoticesReachTheViewer) {
 }
 
 TEST(ViewerInputUnderXvfb, WithCascadesTheShadowMapInsetShowsEveryLayerInItsSplitColour) {
-    // 960 x 540 without panels, three splits: the inset is three squares of (480 - 6) / 3 = 158 px
-    // (capped by the default 180) at (12, 370), each under a strip in its split's colour.
+    // 960 x 540 without panels, three splits: the inset is three squares of the default 180 px at
+    // (12, 348), 3 px apart (with the observer they fit the row unshrunk), each under a strip in its
+    // split's colour.
     const fs::path dir = fs::path(VIEWER_TEST_DIR);
     fs::create_directories(dir);
     const fs::path view = dir / "csm.json", shot = dir / "csm.png", log = dir / "csm.log";
@@ -242,7 +243,7 @@ TEST(ViewerInputUnderXvfb, WithCascadesTheShadowMapInsetShowsEveryLayerInItsSpli
     RgbaImage image;
     std::string error;
     ASSERT_TRUE(readPng(shot, image, error)) << error;
-    const int side = 158, x0 = 12, top = 540 - 12 - side;
+    const int side = 180, x0 = 12, top = 540 - 12 - side;
     const glm::ivec3 colours[3] = {{255, 115, 115}, {115, 255, 115}, {115, 153, 255}};  // cascadeColor(i) x 255
     for (int i = 0; i < 3; ++i) {
         const glm::ivec4 strip(image.at(x0 + i * (side + 3) + side / 2, top + 1));
