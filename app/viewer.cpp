@@ -17,6 +17,7 @@
 #include "render_target.h"
 #include "screen_overlays.h"
 #include "scenes/animation.h"
+#include "settings/method_choice.h"
 #include "viewer_frame.h"
 #include "viewer_open.h"
 #include "widgets.h"
@@ -208,8 +209,8 @@ void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string
 void updateTitle(GLFWwindow* window, const ViewerState& state, std::string& windowTitle) {
     // The title names the scene and the method(s) on screen.
     std::string title = "shadowlab - " + std::filesystem::path(state.status.sceneName).filename().string() + " - ";
-    for (ShadowMethod m : ui::shownMethods(state.settings))
-        title += std::string(title.back() == ' ' ? "" : " | ") + methodName(m);
+    for (const Pane& pane : splitPanes(state.settings))  // "csm-lispsm" for cascades
+        title += std::string(title.back() == ' ' ? "" : " | ") + methodChoiceName(methodChoiceOf(pane.settings));
     if (title != windowTitle) glfwSetWindowTitle(window, (windowTitle = title).c_str());
 }
 

@@ -1,5 +1,7 @@
 #include "view_state.h"
 
+#include "settings/method_choice.h"
+
 namespace shadowlab::ui {
 
 std::vector<ShadowMethod> shownMethods(const Settings& settings) {
@@ -21,6 +23,8 @@ std::string screenshotFileName(const Settings& settings, std::time_t when) {
         if (!methods.empty()) methods += "-vs-";
         methods += methodName(m);
     }
+    // One view with cascades: "csm-lispsm" (a split compare names its methods).
+    if (settings.compare.count <= 1 && settings.csm.enabled) methods = methodChoiceName(methodChoiceOf(settings));
     return "shadowlab-" + methods + "-" + stamp + ".png";
 }
 

@@ -170,6 +170,12 @@ TEST(ViewState, ScreenshotNamesIncludeTheMethods) {
     EXPECT_EQ(screenshotFileName(s, 0).rfind("shadowlab-ssm-vs-ssm-unfocused-vs-lispsm-", 0), 0u);
     s.compare.count = 2;
     EXPECT_EQ(shownMethods(s), (std::vector<ShadowMethod>{ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused}));
+    s.compare.count = 1;
+    s.csm.enabled = true;
+    s.csm.perSplit = SplitParameterization::StableSsm;
+    EXPECT_EQ(screenshotFileName(s, 0).rfind("shadowlab-csm-stable-", 0), 0u) << screenshotFileName(s, 0);
+    s.csm.enabled = false;
+    s.compare.count = 2;
     s.compare.methods.clear();  // a hand-edited view without a list still shows something
     EXPECT_EQ(shownMethods(s), std::vector<ShadowMethod>{ShadowMethod::Psm});
 }
