@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -83,14 +84,34 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     stats.cullingCpuMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+std::size_t Renderer::selectCascadeMaps(const std::vector<ShadowMapKey>& layerKeys, int views) {
+    // As selectShadowMap: one array per view of a split compare (each pane's layers survive the
+    // other panes' frames), the one holding most of this frame's layers, else the least recent.
+    const std::size_t pool = std::size_t(std::clamp(views, 1, 3));
+    if (cascadePool_.size() != pool) {
+        cascadePool_.resize(pool);
+        cascadeLastUse_.resize(pool, 0);
+    }
+    std::size_t pick = 0;
+    int best = 0;
+    for (std::size_t p = 0; p < pool; ++p) {
+        int held = 0;
+        for (std::size_t i = 0; i < layerKeys.size(); ++i) held += cascadePool_[p].holds(int(i), layerKeys[i]) ? 1 : 0;
+        if (held > best) pick = p, best = held;
+    }
+    if (best == 0)
+        pick = std::size_t(std::min_element(cascadeLastUse_.begin(), cascadeLastUse_.end()) - cascadeLastUse_.begin());
+    cascadeLastUse_[pick] = ++mapUseClock_;
+    return pick;
+}
+
 void Renderer::cascadeShadowPass(const Frame& frame, FrameStats& stats) {
     const auto cpuStart = std::chrono::steady_clock::now();
     shadowTimer_.begin();
     const int layers = int(frame.cascades.splits.size());
     const int size = frame.settings.shadowMapSize;
-    cascadeMaps_.ensure(size, layers);
-    stats.shadowMapSize = size;
-    stats.cascadeLayersReused = 0;
+    std::vector<Frame> layerFrames;
+    std::vector<ShadowMapKey> keys;
     for (int i = 0; i < layers; ++i) {
         const CascadeSplit& split = frame.cascades.splits[std::size_t(i)];
         Frame layer = frame;
@@ -99,15 +120,22 @@ void Renderer::cascadeShadowPass(const Frame& frame, FrameStats& stats) {
         layer.casters = split.setup.valid ? frame.cascadeCasters[std::size_t(i)] : InstanceList{};
         layer.shadowMapMirrored =
             split.setup.valid && !lightFacingIsCounterClockwise(layer.worldToShadowClip, frame.light, split.setup.bodyBounds);
+        keys.push_back(shadowMapKey(layer));
+        layerFrames.push_back(std::move(layer));
+    }
+    currentCascades_ = selectCascadeMaps(keys, frame.settings.compare.count);
+    cascadeMaps().ensure(size, layers);
+    stats.shadowMapSize = size;
+    stats.cascadeLayersReused = 0;
+    for (int i = 0; i < layers; ++i) {
         // Per layer, as the single map (skip.reuseShadowMap): a split whose matrix, depth range
         // and casters did not change keeps its layer.
-        ShadowMapKey key = shadowMapKey(layer);
-        if (frame.settings.skip.reuseShadowMap && cascadeMaps_.holds(i, key)) {
+        if (frame.settings.skip.reuseShadowMap && cascadeMaps().holds(i, keys[std::size_t(i)])) {
             ++stats.cascadeLayersReused;
             continue;
         }
-        drawShadowDepth(layer, cascadeMaps_.framebuffer(i), size, stats.shadowPass);
-        cascadeMaps_.setContent(i, std::move(key));
+        drawShadowDepth(layerFrames[std::size_t(i)], cascadeMaps().framebuffer(i), size, stats.shadowPass);
+        cascadeMaps().setContent(i, std::move(keys[std::size_t(i)]));
     }
     shadowTimer_.end();
     stats.shadowMapReused = layers > 0 && stats.cascadeLayersReused == layers;
@@ -147,9 +175,9 @@ void Renderer::setCascadeUniforms(const gl::Program& program, const Frame& frame
         program.set("uCascadeOffset" + index, float(constant * scale));
     }
     program.set("uLinearRange", glm::vec2(0.0f, 1.0f));  // raw distance: the split's range applies per fragment
-    program.set("uShadowTexel", glm::vec2(1.0f / float(cascadeMaps_.size())));
-    glBindTextureUnit(1, cascadeMaps_.texture());
-    glBindSampler(1, cascadeMaps_.sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware));
+    program.set("uShadowTexel", glm::vec2(1.0f / float(cascadeMaps().size())));
+    glBindTextureUnit(1, cascadeMaps().texture());
+    glBindSampler(1, cascadeMaps().sampler(s.filter.filter == ShadowFilter::Pcf2x2Hardware));
 }
 
 }  // namespace shadowlab

@@ -232,7 +232,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     if (frame.cascaded) {
         cascadeShadowPass(frame, stats);
     } else if (frame.shadowed) {
-        cascadeMaps_.release();
+        for (CascadeMaps& maps : cascadePool_) maps.release();
         ShadowMapKey key = shadowMapKey(frame);
         currentMap_ = selectShadowMap(key, settings.compare.count);
         stats.shadowMapReused = settings.skip.reuseShadowMap && shadowMap().holds(key);

@@ -83,8 +83,8 @@ public:
     // split that sees something. The maps: one layer per split of a GL_TEXTURE_2D_ARRAY (depth,
     // compare mode on; 0 when csm is off).
     const CascadeSetup& lastCascadeSetup() const { return lastCascades_; }
-    GLuint cascadeMapTexture() const { return cascadeMaps_.texture(); }
-    int cascadeMapLayers() const { return cascadeMaps_.layers(); }
+    GLuint cascadeMapTexture() const { return cascadeMaps().texture(); }
+    int cascadeMapLayers() const { return cascadeMaps().layers(); }
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
 
 private:
@@ -142,7 +142,14 @@ private:
     std::vector<std::uint64_t> mapLastUse_{0};
     std::uint64_t mapUseClock_ = 0;
     std::size_t currentMap_ = 0;
-    CascadeMaps cascadeMaps_;
+    // The cascade layers of the last cascaded frame, out of one array per compared view, as the
+    // one-map pool (selectCascadeMaps, cascade_pass.cpp).
+    CascadeMaps& cascadeMaps() { return cascadePool_[currentCascades_]; }
+    const CascadeMaps& cascadeMaps() const { return cascadePool_[currentCascades_]; }
+    std::size_t selectCascadeMaps(const std::vector<ShadowMapKey>& layerKeys, int views);
+    std::vector<CascadeMaps> cascadePool_{1};
+    std::vector<std::uint64_t> cascadeLastUse_{0};
+    std::size_t currentCascades_ = 0;
     CascadeSetup lastCascades_;  // lastCascadeSetup()
     ShadowTermTargets termTargets_;
     VisibleDepthPrePass visibleDepth_;  // PSM auto near / LiSPSM auto z_f

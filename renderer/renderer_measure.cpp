@@ -84,7 +84,7 @@ void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     out.fovYRad = frame.view.fovY;
     out.zNear = frame.view.zNear;
     out.zFar = frame.view.zFar;
-    out.shadowMapSize = frame.cascaded ? cascadeMaps_.size() : frame.shadowed ? shadowMap().size() : 0;
+    out.shadowMapSize = frame.cascaded ? cascadeMaps().size() : frame.shadowed ? shadowMap().size() : 0;
     stats.passes.push_back(
         {"measure (+ read-back)", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count(),
          0.0});

@@ -219,6 +219,33 @@ TEST_F(FrameSkips, EachViewOfASplitCompareKeepsItsOwnMap) {
     EXPECT_FALSE(firstFrame(scene, s).shadowMapReused);
 }
 
+// The same for cascades: each pane of a split compare keeps its own layers (one array per view).
+TEST_F(FrameSkips, EachCascadedViewOfASplitCompareKeepsItsOwnLayers) {
+    const Scene scene = planeBoxScene();
+    Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
+    s.shadowMapSize = 256;
+    s.compare.count = 3;
+    s.csm.enabled = true;
+    render(scene, s);  // creates renderer and target
+    const SplitParameterization perSplit[3] = {SplitParameterization::Ssm, SplitParameterization::StableSsm,
+                                               SplitParameterization::Lispsm};
+    auto view = [&](SplitParameterization p) {
+        Settings v = s;
+        v.csm.perSplit = p;
+        return v;
+    };
+    for (int frame = 0; frame < 2; ++frame)
+        for (SplitParameterization p : perSplit) firstFrame(scene, view(p));
+    for (SplitParameterization p : perSplit) {
+        const FrameStats f = firstFrame(scene, view(p));
+        EXPECT_TRUE(f.shadowMapReused) << splitParameterizationName(p);
+        EXPECT_EQ(f.cascadeLayersReused, s.csm.splits) << splitParameterizationName(p);
+    }
+    s.compare.count = 1;  // one view: one array, re-rendered as the parameterisations alternate
+    firstFrame(scene, view(SplitParameterization::Ssm));
+    EXPECT_EQ(firstFrame(scene, view(SplitParameterization::Lispsm)).cascadeLayersReused, 0);
+}
+
 TEST_F(FrameSkips, VisibleDepthArrivesOneFrameLateAndIsKeptWhileTheViewStays) {
     const Scene scene = planeBoxScene();
     Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
