@@ -202,6 +202,63 @@ TEST(CascadeSetups, LaterSplitsHaveLargerTexels) {
     for (int i = 1; i < 4; ++i) EXPECT_GT(cs.splits[i].texelWorldSize, cs.splits[i - 1].texelWorldSize);
 }
 
+// The stress suite's containment check (math/stress.h) for every split: random views with fov
+// 10..120 deg, near 1e-3..1, far/near up to 1e5, world offsets up to 1e5, suns from any direction
+// (a third exactly along the view axis or an axis), visible ranges inside the frustum or none. Every
+// valid split's matrix is finite and maps the vertices of its own B_i (recomputed here from V_i)
+// into the clip cube within 1e-4; a split that sees something lit is valid.
+TEST(CascadeStress, EverySplitMatrixContainsItsBodyOnRandomViews) {
+    Rng rng(2026);
+    int checkedSplits = 0, failures = 0;
+    std::string first;
+    for (int trial = 0; trial < 300; ++trial) {
+        const glm::dvec3 offset = rng.chance(0.3) ? glm::dvec3(0.0) : rng.unit() * rng.logUniform(1.0, 1e5);
+        Aabb scene;
+        const glm::dvec3 half{rng.logUniform(1.0, 2e3), rng.logUniform(0.1, 100.0), rng.logUniform(1.0, 2e3)};
+        scene.min = offset - half;
+        scene.max = offset + half;
+        ViewFrustum view;
+        view.eye = offset + glm::dvec3(rng.uniform(-1, 1) * half.x, rng.uniform(0, 1.5) * half.y, rng.uniform(-1, 1) * half.z);
+        view.forward = glm::normalize(glm::dvec3(rng.uniform(-1, 1), rng.uniform(-0.8, 0.2), rng.uniform(-1, 1)));
+        view.fovY = rng.uniform(10.0, 120.0) * kPi / 180.0;
+        view.aspect = rng.uniform(0.5, 2.5);
+        view.zNear = rng.logUniform(1e-3, 1.0);
+        view.zFar = view.zNear * rng.logUniform(10.0, 1e5);
+        glm::dvec3 dir = rng.unit();
+        if (trial % 3 == 0) dir = trial % 2 ? view.forward : glm::dvec3(0, -1, 0);
+        if (dir.y > 0.0 && trial % 3 != 0) dir.y = -dir.y;
+        const ShadowLight light = sun(dir);
+        for (SplitParameterization per : kAllPerSplit) {
+            CascadeParams p = cascade(per, 1 + trial % 4, rng.uniform());
+            if (rng.chance(0.5)) {
+                p.visibleNear = view.zNear * rng.logUniform(1.0, 100.0);
+                p.visibleFar = std::min(view.zFar, p.visibleNear * rng.logUniform(2.0, 1e4));
+            }
+            const CascadeSetup cs = computeCascadeSetup(view, light, scene, p);
+            ASSERT_TRUE(cs.error.empty()) << cs.error;
+            for (const CascadeSplit& split : cs.splits) {
+                const ConvexBody B = intersectionBody(splitFrustum(view, split.zNear, split.zFar), light, scene);
+                if (B.empty()) continue;
+                ++checkedSplits;
+                const glm::dmat4& m = split.setup.worldToShadowClip;
+                bool ok = split.setup.valid;
+                for (int a = 0; a < 4; ++a)
+                    for (int b = 0; b < 4; ++b) ok &= std::isfinite(m[a][b]);
+                for (const auto& v : B.vertices()) {
+                    const glm::dvec4 h = m * glm::dvec4(v, 1.0);
+                    ok &= h.w > 0.0 && std::abs(h.x / h.w) <= 1.0 + 1e-4 && std::abs(h.y / h.w) <= 1.0 + 1e-4 &&
+                          std::abs(h.z / h.w) <= 1.0 + 1e-4;
+                }
+                if (!ok && failures++ == 0)
+                    first = "trial " + std::to_string(trial) + " " + splitParameterizationName(per) + " split near " +
+                            std::to_string(split.zNear);
+            }
+        }
+    }
+    EXPECT_EQ(failures, 0) << "first: " << first;
+    EXPECT_GT(checkedSplits, 1000);
+}
+
 // --- The visible depth range and the measured receivers (depth pre-pass) ---------------------
 
 TEST(CascadeVisibleRange, SplitsCoverTheVisibleRangeAndTheFirstStartsAtTheNearPlane) {
