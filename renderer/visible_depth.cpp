@@ -78,10 +78,12 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
     };
     VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}};
-    // Receivers: a grid of pixel centres (background skipped), unprojected in double, each with
-    // the normal of the plane through it and its right and upper neighbours (the one facing the
-    // eye); where a neighbour is background or across a depth edge the normal is left to the
-    // search's stand-in (the eye/light bisector).
+    // Receivers: a grid of pixels from border to border (background skipped), unprojected in
+    // double. The image's edges hold the nearest, farthest and outermost receivers, where the
+    // footprint peaks (sweep, seeds 1-6 x 4000 sun views: LiSPSM's worst view 1.98x SSM with the
+    // grid at cell centres, 1.04x with the border grid). Each gets the normal of the plane through
+    // it and its horizontal and vertical neighbours (the one facing the eye); where a neighbour is
+    // background or across a depth edge the normal faces the eye.
     constexpr int kGridX = ShadowParams::kReceiverGridX, kGridY = ShadowParams::kReceiverGridY;
     const glm::dmat4 clipToWorld = glm::inverse(view.viewProjection);
     auto worldAt = [&](int x, int y, glm::dvec3& p) {
@@ -96,7 +98,7 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
     out.receivers.reserve(kGridX * kGridY);
     for (int j = 0; j < kGridY; ++j)
         for (int i = 0; i < kGridX; ++i) {
-            const int x = (2 * i + 1) * view.width / (2 * kGridX), y = (2 * j + 1) * view.height / (2 * kGridY);
+            const int x = i * (view.width - 1) / (kGridX - 1), y = j * (view.height - 1) / (kGridY - 1);
             SurfacePoint s;
             if (!worldAt(x, y, s.point)) continue;
             glm::dvec3 right, up;

@@ -13,6 +13,7 @@ constexpr int kGridSteps = 5, kRefineSteps = 6;
 constexpr double kActiveShare = 0.7;
 constexpr double kHintTolerance = 1.10;
 constexpr double kGrazingCosine = 0.1;  // N.L below this: ~6 deg from grazing
+constexpr int kEnoughUngrazed = 4;
 constexpr double kMaxWarpRatio = 1e5;  // f/n beyond this spends the map on a sliver at the eye
 
 // One sample's data, projected onto its receiver's tangent plane (t1, t2) once, so that each
@@ -122,10 +123,8 @@ double worstFootprint(double k, const std::vector<Sample>& samples, const std::v
 
 }  // namespace
 
-std::vector<ReceiverSample> receiverSamples(const ViewFrustum& v, const ShadowLight& light,
-                                            const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
-                                            double depthNear, double depthFar, const std::vector<SurfacePoint>& measured) {
-    std::vector<ReceiverSample> out;
+std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured) {
+    std::vector<ReceiverSample> out, grazing;
     // The measured visible surfaces (spot lights: those in the cone) with their own normals.
     // Surfaces facing away are not shadow-tested (thesis 6.2); those the light grazes have every
     // map's texels stretched by projection aliasing (thesis 3.2, >= 1/kGrazingCosine), which no warp
@@ -136,14 +135,28 @@ std::vector<ReceiverSample> receiverSamples(const ViewFrustum& v, const ShadowLi
         if (!litBy(light, p.point)) continue;
         const glm::dvec3 toLight = light.kind == ShadowLightKind::Spot ? glm::normalize(light.position - p.point)
                                                                        : -glm::normalize(light.direction);
-        if (glm::dot(p.normal, toLight) > kGrazingCosine) out.push_back({p.point, p.normal, 1.0});
+        const double cosLight = glm::dot(p.normal, toLight);
+        if (cosLight > kGrazingCosine) out.push_back({p.point, p.normal, 1.0});
+        else if (cosLight > 0.0) grazing.push_back({p.point, p.normal, 1.0});
     }
-    if (!out.empty()) return out;
+    // Where the light grazes all but a few measured receivers (a spot a few metres above the
+    // ground aiming past the viewer), the grazed ones join: their positions still say where the
+    // receivers are, which the stand-ins below do not. Sweep, 2000 spot views, seed 1: LiSPSM's
+    // worst view 1.81x -> 1.16x SSM, 3 -> 0 views above 1.5x (seeds 1-8 in the closing note).
+    if (out.size() < std::size_t(kEnoughUngrazed)) out.insert(out.end(), grazing.begin(), grazing.end());
+    return out;
+}
+
+std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& v, const ShadowLight& light,
+                                                   const ConvexBody& visibleLit,
+                                                   const std::vector<glm::dvec3>& visibleLitVertices, double depthNear,
+                                                   double depthFar) {
+    std::vector<ReceiverSample> out;
     const ViewBasis b = viewBasis(v);
-    // Else stand-ins: the visible lit body (L n V n S) between the nearest and farthest visible
-    // depth, whose vertices are the extreme receivers (nearest, farthest, at the image and cone
-    // borders), where the footprint peaks, and its centroid for the interior. (No clip, and no
-    // copy, where the range is the frustum's own.)
+    // The visible lit body (L n V n S) between the nearest and farthest visible depth, whose
+    // vertices are the extreme receivers (nearest, farthest, at the image and cone borders), where
+    // the footprint peaks, and its centroid for the interior. (No clip, and no copy, where the
+    // range is the frustum's own.)
     std::vector<glm::dvec3> points;
     if (depthNear <= v.zNear && depthFar >= v.zFar) {
         points = visibleLitVertices;
@@ -173,6 +186,14 @@ std::vector<ReceiverSample> receiverSamples(const ViewFrustum& v, const ShadowLi
         out.push_back({p, glm::dvec3(0.0, 1.0, 0.0), 1.0});
     }
     return out;
+}
+
+std::vector<ReceiverSample> receiverSamples(const ViewFrustum& v, const ShadowLight& light,
+                                            const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
+                                            double depthNear, double depthFar, const std::vector<SurfacePoint>& measured) {
+    std::vector<ReceiverSample> out = measuredReceiverSamples(light, measured);
+    if (!out.empty()) return out;
+    return standInReceiverSamples(v, light, visibleLit, visibleLitVertices, depthNear, depthFar);
 }
 
 double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,

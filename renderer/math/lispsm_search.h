@@ -41,8 +41,15 @@ struct ReceiverSample {
     glm::dvec3 point{0.0}, normal{0.0, 1.0, 0.0};
     double weight = 1.0;
 };
-// With `measured` points (visible surfaces from the depth pre-pass, with their normals) those are
-// the receivers instead of the body's vertices (spot lights: the ones inside the cone).
+// The measured receivers (visible surfaces from the depth pre-pass, with their normals; spot
+// lights: the ones inside the cone): those the light does not graze, else the grazed ones.
+std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured);
+// Stand-ins where nothing was measured: the visible lit body's vertices between the two depths.
+std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& view, const ShadowLight& light,
+                                                   const ConvexBody& visibleLit,
+                                                   const std::vector<glm::dvec3>& visibleLitVertices, double depthNear,
+                                                   double depthFar);
+// The measured receivers where there are any, else the stand-ins.
 std::vector<ReceiverSample> receiverSamples(const ViewFrustum& view, const ShadowLight& light,
                                             const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
                                             double depthNear, double depthFar, const std::vector<SurfacePoint>& measured);

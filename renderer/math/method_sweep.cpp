@@ -49,11 +49,12 @@ GroundSamples groundSamples(const SweepCase& c, const SweepOptions& o) {
         p = v.eye + dir * t;
         return p.x >= c.scene.min.x && p.x <= c.scene.max.x && p.z >= c.scene.min.z && p.z <= c.scene.max.z;
     };
+    // The pre-pass's receiver grid: border to border (renderer/visible_depth.cpp).
     constexpr int gx = ShadowParams::kReceiverGridX, gy = ShadowParams::kReceiverGridY;
     for (int j = 0; j < gy; ++j)
         for (int i = 0; i < gx; ++i) {
             glm::dvec3 p;
-            if (visibleGround(-1.0 + (2.0 * i + 1.0) / gx, -1.0 + (2.0 * j + 1.0) / gy, p))
+            if (visibleGround(-0.999 + 1.998 * i / (gx - 1), -0.999 + 1.998 * j / (gy - 1), p))
                 g.grid.push_back({p, glm::dvec3(0.0, 1.0, 0.0)});
         }
     for (int j = 0; j < o.samplesY; ++j)

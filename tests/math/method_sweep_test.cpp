@@ -34,8 +34,11 @@ TEST(MethodSweep, LispsmNeverLosesToSsmByHalf) {
     EXPECT_LE(sun.worse5, sun.views / 100) << "more than 1% of the sun views > 1.05x SSM";
     EXPECT_GT(sun.geometricMeanGain(), 2.0);
     EXPECT_GT(spot.geometricMeanGain(), 1.0);
+    EXPECT_LE(spot.worse5, spot.views / 100) << "more than 1% of the spot views > 1.05x SSM";
     const auto& psmSun = figuresOf(r.directional, ShadowMethod::Psm);
     EXPECT_EQ(psmSun.worse50, 0u) << psmSun.worstCase;
+    const auto& psmSpot = figuresOf(r.spot, ShadowMethod::Psm);
+    EXPECT_EQ(psmSpot.worse50, 0u) << psmSpot.worstCase;
 }
 
 // Without the pre-pass's receiver points the warps measure at stand-ins (the visible lit body's
