@@ -208,6 +208,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // sample receivers from there on (math/lispsm_search.h).
         if (visible.nearest > 0.0) params.lispsm.pseudoNear = visible.nearest;
         params.receiverPoints = visible.receivers;
+        if (frame.light.type == LightType::Spot) params.fineReceiverPoints = visible.fineReceivers;
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
         frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds, params);
         stats.shadow = frame.shadow.diagnostics;

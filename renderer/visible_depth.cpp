@@ -77,7 +77,7 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         const double ndcZ = 2.0 * double(d) - 1.0;
         return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
     };
-    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}};
+    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}, {}};
     // Receivers: a grid of pixels from border to border (background skipped), unprojected in
     // double. The image's edges hold the nearest, farthest and outermost receivers, where the
     // footprint peaks (sweep, seeds 1-6 x 4000 sun views: LiSPSM's worst view 1.98x SSM with the
@@ -95,30 +95,35 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         p = glm::dvec3(w) / w.w;
         return true;
     };
-    out.receivers.reserve(kGridX * kGridY);
-    for (int j = 0; j < kGridY; ++j)
-        for (int i = 0; i < kGridX; ++i) {
-            const int x = i * (view.width - 1) / (kGridX - 1), y = j * (view.height - 1) / (kGridY - 1);
-            SurfacePoint s;
-            if (!worldAt(x, y, s.point)) continue;
-            glm::dvec3 right, up;
-            const int xr = std::min(x + 1, view.width - 1) == x ? x - 1 : x + 1;
-            const int yu = std::min(y + 1, view.height - 1) == y ? y - 1 : y + 1;
-            const glm::dvec3 toEye = view.view.eye - s.point;
-            s.normal = glm::dvec3(0.0);
-            if (worldAt(xr, y, right) && worldAt(x, yu, up)) {
-                const glm::dvec3 a = right - s.point, b = up - s.point, n = glm::cross(a, b);
-                const double len = glm::length(n);
-                // Across a depth edge the neighbours lie far apart: more than 10x the pixel's width.
-                const double spread = std::max(glm::length(a), glm::length(b));
-                if (len > 0.0 && spread < 10.0 * std::min(glm::length(a), glm::length(b)) + 1e-12)
-                    s.normal = glm::dot(n, toEye) >= 0.0 ? n / len : -n / len;
+    auto sampleGrid = [&](int gridX, int gridY, std::vector<SurfacePoint>& receivers) {
+        receivers.reserve(std::size_t(gridX) * std::size_t(gridY));
+        for (int j = 0; j < gridY; ++j)
+            for (int i = 0; i < gridX; ++i) {
+                const int x = i * (view.width - 1) / (gridX - 1), y = j * (view.height - 1) / (gridY - 1);
+                SurfacePoint s;
+                if (!worldAt(x, y, s.point)) continue;
+                glm::dvec3 right, up;
+                const int xr = std::min(x + 1, view.width - 1) == x ? x - 1 : x + 1;
+                const int yu = std::min(y + 1, view.height - 1) == y ? y - 1 : y + 1;
+                const glm::dvec3 toEye = view.view.eye - s.point;
+                s.normal = glm::dvec3(0.0);
+                if (worldAt(xr, y, right) && worldAt(x, yu, up)) {
+                    const glm::dvec3 a = right - s.point, b = up - s.point, n = glm::cross(a, b);
+                    const double len = glm::length(n);
+                    // Across a depth edge the neighbours lie far apart: more than 10x the pixel's width.
+                    const double spread = std::max(glm::length(a), glm::length(b));
+                    if (len > 0.0 && spread < 10.0 * std::min(glm::length(a), glm::length(b)) + 1e-12)
+                        s.normal = glm::dot(n, toEye) >= 0.0 ? n / len : -n / len;
+                }
+                if (glm::length(s.normal) == 0.0) {  // no reliable normal: face the eye
+                    s.normal = glm::normalize(toEye);
+                }
+                receivers.push_back(s);
             }
-            if (glm::length(s.normal) == 0.0) {  // no reliable normal: face the eye
-                s.normal = glm::normalize(toEye);
-            }
-            out.receivers.push_back(s);
-        }
+    };
+    sampleGrid(kGridX, kGridY, out.receivers);
+    // The fine grid, for spot cones that light a small part of the image (math/lispsm_search.h).
+    sampleGrid(ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY, out.fineReceivers);
     return out;
 }
 

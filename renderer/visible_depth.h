@@ -31,6 +31,7 @@ struct VisibleDepthRange {
     // The visible surfaces at a coarse grid of pre-pass pixels, with normals from the depth: the
     // receivers LiSPSM's warp search and PSM's guard measure the footprint at (math/lispsm_search.h).
     std::vector<SurfacePoint> receivers;
+    std::vector<SurfacePoint> fineReceivers;  // the same at a 4x finer grid (ShadowParams::fineReceiverPoints)
 };
 
 // What a measurement is valid for.

@@ -41,6 +41,18 @@ struct ReceiverSample {
     glm::dvec3 point{0.0}, normal{0.0, 1.0, 0.0};
     double weight = 1.0;
 };
+// Fewer measured receivers than this in the light and a spot light's finer grid is consulted
+// (receiversInLight), and PSM's guard also checks the stand-ins (shadow_setup.cpp).
+constexpr std::size_t kEnoughMeasuredReceivers = 16;
+// At most this many receivers go into the search (its cost is linear in them).
+constexpr std::size_t kMaxMeasuredReceivers = 48;
+// The measured receivers the warp search and PSM's guard use: the coarse grid, joined for a spot
+// light by the fine grid's points in its cone (strided down to kMaxMeasuredReceivers) where fewer
+// than kEnoughMeasuredReceivers of the coarse ones are in it. Returns `coarse` itself or `storage`.
+const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, const std::vector<SurfacePoint>& coarse,
+                                                  const std::vector<SurfacePoint>& fine,
+                                                  std::vector<SurfacePoint>& storage);
+
 // The measured receivers (visible surfaces from the depth pre-pass, with their normals; spot
 // lights: the ones inside the cone): those the light does not graze, else the grazed ones.
 std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured);

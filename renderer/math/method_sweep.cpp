@@ -24,6 +24,7 @@ glm::dvec3 fromAngles(double yaw, double pitch) {
 struct GroundSamples {
     std::vector<glm::dvec3> points;
     std::vector<SurfacePoint> grid;  // the visible ground at the pre-pass's receiver grid of the image
+    std::vector<SurfacePoint> fineGrid;  // and at its fine grid
     double nearest = 0.0, farthest = 0.0;  // eye depth range (what a depth pre-pass measures)
 };
 
@@ -49,14 +50,17 @@ GroundSamples groundSamples(const SweepCase& c, const SweepOptions& o) {
         p = v.eye + dir * t;
         return p.x >= c.scene.min.x && p.x <= c.scene.max.x && p.z >= c.scene.min.z && p.z <= c.scene.max.z;
     };
-    // The pre-pass's receiver grid: border to border (renderer/visible_depth.cpp).
-    constexpr int gx = ShadowParams::kReceiverGridX, gy = ShadowParams::kReceiverGridY;
-    for (int j = 0; j < gy; ++j)
-        for (int i = 0; i < gx; ++i) {
-            glm::dvec3 p;
-            if (visibleGround(-0.999 + 1.998 * i / (gx - 1), -0.999 + 1.998 * j / (gy - 1), p))
-                g.grid.push_back({p, glm::dvec3(0.0, 1.0, 0.0)});
-        }
+    // The pre-pass's receiver grids: border to border (renderer/visible_depth.cpp).
+    auto grid = [&](int gx, int gy, std::vector<SurfacePoint>& out) {
+        for (int j = 0; j < gy; ++j)
+            for (int i = 0; i < gx; ++i) {
+                glm::dvec3 p;
+                if (visibleGround(-0.999 + 1.998 * i / (gx - 1), -0.999 + 1.998 * j / (gy - 1), p))
+                    out.push_back({p, glm::dvec3(0.0, 1.0, 0.0)});
+            }
+    };
+    grid(ShadowParams::kReceiverGridX, ShadowParams::kReceiverGridY, g.grid);
+    grid(ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY, g.fineGrid);
     for (int j = 0; j < o.samplesY; ++j)
         for (int i = 0; i < o.samplesX; ++i) {
             const double x = -1.0 + (2.0 * i + 1.0) / o.samplesX, y = -1.0 + (2.0 * j + 1.0) / o.samplesY;
@@ -115,7 +119,10 @@ ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum&
     p.lispsm.virtualFar = std::clamp(g.farthest, shadowView.zNear * 1.001, shadowView.zFar);
     p.lispsm.pseudoNear = g.nearest;
     // The pre-pass's receiver grid (renderer/visible_depth.cpp, ShadowParams::kReceiverGridX/Y).
-    if (receivers) p.receiverPoints = g.grid;
+    if (receivers) {
+        p.receiverPoints = g.grid;
+        p.fineReceiverPoints = g.fineGrid;
+    }
     return p;
 }
 

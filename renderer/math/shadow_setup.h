@@ -83,6 +83,10 @@ struct ShadowParams {
     std::vector<SurfacePoint> receiverPoints;
     // The pixel grid the depth pre-pass samples them at (and the method sweep simulates).
     static constexpr int kReceiverGridX = 8, kReceiverGridY = 6;
+    // The same surfaces at a 4x finer grid, for a spot light that lights too small a part of the
+    // image for the coarse grid (math/lispsm_search.h: receiversInLight). May be empty.
+    std::vector<SurfacePoint> fineReceiverPoints;
+    static constexpr int kFineReceiverGridX = 32, kFineReceiverGridY = 24;
     // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
     bool collectPolygons = true;
 };
