@@ -50,12 +50,12 @@ GroundSamples groundSamples(const SweepCase& c, const SweepOptions& o) {
         p = v.eye + dir * t;
         return p.x >= c.scene.min.x && p.x <= c.scene.max.x && p.z >= c.scene.min.z && p.z <= c.scene.max.z;
     };
-    // The pre-pass's receiver grids: border to border (renderer/visible_depth.cpp).
+    // The pre-pass's receiver grids: pixels at the cells' centres (renderer/visible_depth.cpp).
     auto grid = [&](int gx, int gy, std::vector<SurfacePoint>& out) {
         for (int j = 0; j < gy; ++j)
             for (int i = 0; i < gx; ++i) {
                 glm::dvec3 p;
-                if (visibleGround(-0.999 + 1.998 * i / (gx - 1), -0.999 + 1.998 * j / (gy - 1), p))
+                if (visibleGround(-1.0 + (2.0 * i + 1.0) / gx, -1.0 + (2.0 * j + 1.0) / gy, p))
                     out.push_back({p, glm::dvec3(0.0, 1.0, 0.0)});
             }
     };

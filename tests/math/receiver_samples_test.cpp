@@ -56,15 +56,6 @@ TEST(ReceiverSamples, SpotGrazingEveryMeasuredReceiverStillWarpsByThem) {
     EXPECT_LE(ratioToSsm(c, ShadowMethod::Lispsm), 1.05);
 }
 
-// Seed 6's worst sun view (eye 26 m up looking level): the receiver grid at cell centres missed
-// the nearest ground at the image's bottom edge, where the chosen warp lost: 1.98x SSM. The grid
-// reaches the image's borders now.
-TEST(ReceiverSamples, ReceiverGridReachesTheImageBorders) {
-    const SweepCase c = sweepCase({{-127.013, 26.1363, -105.776}, {-0.99577, 0.0283215, 0.0874024}, 79.17, 0.1345,
-                                   128.43, {0.66465, -0.33357, -0.66856}, {0, 0, 0}, 0.0, 163.67, 9.502});
-    EXPECT_LE(ratioToSsm(c, ShadowMethod::Lispsm), 1.05);
-}
-
 // Seed 2's worst PSM spot view (grid at cell centres): the spot lit ~7% of the image and none of
 // the 48 grid points; the guard judged PSM at the stand-ins alone (gain 1.09 estimated, 1.59x SSM
 // measured). With measured receivers of which none is in the light, the focused SSM is kept and
@@ -93,7 +84,8 @@ TEST(ReceiverSamples, PsmGuardWithoutMeasuredReceiversInTheLightKeepsSsm) {
               std::string::npos);
 }
 
-// Seed 3's worst PSM spot view: 4 measured receivers in the light, in two rows; PSM looked 1.11x
+// Seed 3's worst PSM spot view (with a receiver grid reaching the image borders, since given up:
+// Sponza lost by it): 4 measured receivers in the light, in two rows; PSM looked 1.11x
 // better there and was 1.74x worse on the ground. With fewer than 16 measured receivers the guard
 // also checks the stand-ins, which see the loss.
 TEST(ReceiverSamples, PsmGuardWithFewMeasuredReceiversAlsoChecksStandIns) {
@@ -104,13 +96,13 @@ TEST(ReceiverSamples, PsmGuardWithFewMeasuredReceiversAlsoChecksStandIns) {
 }
 
 // Seed 7's worst LiSPSM spot view: the cone covers 2.5% of the image and 6 coarse grid points, all
-// in one row at 65 m; the warp chosen for that row was 1.53x SSM on the lit ground. The fine grid's
-// points in the cone join: 1.42x (the worst of 16,000 spot views of seeds 1-8).
+// in one row at 65 m; the warp chosen for that row was 4.2x SSM on the lit ground. With the fine
+// grid's points in the cone: 1.67x (the worst of 16,000 spot views of seeds 1-8, closing note).
 TEST(ReceiverSamples, SmallSpotConeIsMeasuredAtTheFineGrid) {
     const SweepCase c = sweepCase({{63.9744, 5.16072, 31.7495}, {0.514633, -0.181095, -0.838068}, 54.72, 0.4534,
                                    136.28, {0.62934, -0.48304, -0.60878}, {83.8211, 11.2478, -10.2593}, 59.48, 115.18,
                                    56.43});
-    EXPECT_LE(ratioToSsm(c, ShadowMethod::Lispsm), 1.45);
+    EXPECT_LE(ratioToSsm(c, ShadowMethod::Lispsm), 1.7);
 }
 
 TEST(ReceiverSamples, FineGridJoinsOnlyForSpotsWithFewCoarseReceiversInTheCone) {
