@@ -1,32 +1,48 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan + coverage) and runs each for RUNS
-# executions, seeded with the shared real scenes and fuzz/seeds_settings. Prints libFuzzer's final
-# stats (the exact execution counts); any crash, leak, timeout (> 1 s) or allocation over
-# 256 MB (-malloc_limit_mb: the fuzz targets' budgets allow far less) stops the run and leaves the
-# input in BUILD/fuzz-artifacts/ — add it under tests/ as a regression fixture.
-# Usage: fuzz/run_fuzzers.sh [RUNS=1000000] [BUILD=build-fuzz] [JOBS=1]
+# executions, seeded with the shared real scenes (files < 2 MB), the scene regression fixtures and
+# fuzz/seeds_settings. Prints libFuzzer's final stats for each target (stat::number_of_executed_units,
+# stat::peak_rss_mb, ...) and the wall time; the whole log is in BUILD/fuzz-TARGET.log. Any crash,
+# leak, timeout (> 1 s) or allocation over 256 MB (-malloc_limit_mb: the targets' budgets allow far
+# less) stops that target's run, leaves the input in BUILD/fuzz-artifacts/ and makes the script
+# exit 1 — copy the input into tests/fuzz_regressions/TARGET/ so CTest replays it from then on.
+# Usage: fuzz/run_fuzzers.sh [RUNS=1000000] [BUILD=build-fuzz] [TARGETS="scene settings"]
+# Environment: BUILD_JOBS (default nproc), SHADOWLAB_SHARED_SCENES, CMAKE_CXX_COMPILER_LAUNCHER (ccache).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-1000000}
 build=${2:-build-fuzz}
-jobs=${3:-1}
+targets=${3:-scene settings}
 scenes=${SHADOWLAB_SHARED_SCENES:-$(pwd)/../shared/scenes}
 
-CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_FUZZ=ON \
+CXX=${CXX:-clang++} cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_FUZZ=ON \
   -DSHADOWLAB_SANITIZE=address,undefined,fuzzer-no-link -DSHADOWLAB_SANITIZED_TWINS=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target fuzz_scene fuzz_settings
+cmake --build "$build" -j"${BUILD_JOBS:-$(nproc)}" --target fuzz_scene fuzz_settings
 
 mkdir -p "$build/corpus/scene" "$build/corpus/settings" "$build/fuzz-artifacts"
 if [[ -d $scenes ]]; then
-  find "$scenes" \( -name '*.glb' -o -name '*.gltf' \) -size -2M -exec cp -n {} "$build/corpus/scene/" \; 2>/dev/null || true
+  find "$scenes" \( -name '*.glb' -o -name '*.gltf' \) -size -2M -exec cp -n {} "$build/corpus/scene/" \;
+else
+  echo "note: no shared scenes at $scenes (set SHADOWLAB_SHARED_SCENES); seeding with the fixtures only"
 fi
-cp -n fuzz/seeds_settings/* "$build/corpus/settings/"
+cp -n tests/fuzz_regressions/scene/* "$build/corpus/scene/"
+cp -n fuzz/seeds_settings/* tests/fuzz_regressions/settings/* "$build/corpus/settings/"
 
 status=0
-for target in scene settings; do
-  echo "== fuzz_$target: $runs executions"
-  "$build/fuzz/fuzz_$target" "$build/corpus/$target" -runs="$runs" -jobs="$jobs" -workers="$jobs" -timeout=1 \
-    -rss_limit_mb=2048 -malloc_limit_mb=256 -max_len=65536 -print_final_stats=1 \
-    -artifact_prefix="$build/fuzz-artifacts/${target}-" 2>&1 | grep -E "^stat::|ERROR|SUMMARY|Done|DONE" || status=1
+for target in $targets; do
+  log="$build/fuzz-$target.log"
+  echo "== fuzz_$target: $runs executions (log: $log)"
+  start=$(date +%s)
+  # One process (no -jobs: with -jobs libFuzzer moves the output into fuzz-N.log files).
+  rc=0
+  "$build/fuzz/fuzz_$target" "$build/corpus/$target" -runs="$runs" -timeout=1 -rss_limit_mb=2048 \
+    -malloc_limit_mb=256 -max_len=65536 -print_final_stats=1 \
+    -artifact_prefix="$build/fuzz-artifacts/${target}-" >"$log" 2>&1 || rc=$?
+  grep -E "^stat::|^Done|ERROR:|SUMMARY:|^artifact_prefix|Test unit written" "$log" || true
+  echo "fuzz_$target: exit $rc, $(($(date +%s) - start)) s wall"
+  [[ $rc -eq 0 ]] || status=1
 done
+if [[ $status -ne 0 ]]; then
+  echo "FAILED: inputs in $build/fuzz-artifacts/ -> add them to tests/fuzz_regressions/<target>/"
+fi
 exit $status

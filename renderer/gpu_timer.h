@@ -1,9 +1,22 @@
 #pragma once
 // GPU time of a pass with GL_TIME_ELAPSED queries. Results are read a few frames later so the
-// CPU never waits on the GPU; `lastMs` is the most recent finished measurement.
+// CPU never waits on the GPU; `lastMs` is the newest finished measurement (0 before the first).
+//
+// Two ways a timer used to report a wrong time, both guarded here:
+// - Stale: results were read newest-before-oldest (the ring was walked from next_ + 1, so the
+//   oldest slot came last), and a finished newer query was read past an unfinished older one,
+//   which then overwrote it a frame later. Now the ring is read oldest first and stops at the
+//   first unfinished query (one context's queries finish in the order they were issued).
+// - Impossible: llvmpipe's TIME_ELAPSED result is max(end) - min(start) over its raster threads,
+//   with min(start) = UINT64_MAX when no thread recorded a start (Mesa, lp_query.c), i.e. the
+//   result is then the raw CLOCK_MONOTONIC time: 6.1e6 and 7.7e6 ms in the issue-10 benches
+//   (the machine's uptime). A pass cannot take longer on the GPU than the wall-clock time from
+//   begin() until its result was read, so a longer result is dropped (lastMs becomes 0, "no
+//   measurement") and counted in `rejected()`.
 #include "gl/gl_objects.h"
 
 #include <array>
+#include <chrono>
 
 namespace shadowlab {
 
@@ -13,20 +26,28 @@ public:
     void end();
     double lastMs() const { return lastMs_; }
     bool pending() const {
-        for (bool p : pending_)
-            if (p) return true;
+        for (const Slot& s : slots_)
+            if (s.pending) return true;
         return false;
     }
     // Waits for every query in flight (headless single frames, tests).
     void resolveBlocking();
+    // Results dropped because they were longer than the wall-clock time they could have taken.
+    long rejected() const { return rejected_; }
 
 private:
+    using Clock = std::chrono::steady_clock;
+    struct Slot {
+        gl::Query query;
+        bool pending = false;
+        Clock::time_point begun;
+    };
     // Deep enough for a split-compare frame (3 views) in flight for a few frames without a stall.
     static constexpr int kRing = 16;
-    std::array<gl::Query, kRing> queries_;
-    std::array<bool, kRing> pending_{};
-    int next_ = 0;
+    std::array<Slot, kRing> slots_;
+    int next_ = 0;  // the slot begin() uses next; once the ring has wrapped, also the oldest
     double lastMs_ = 0.0;
+    long rejected_ = 0;
     void collect(bool wait);
 };
 
