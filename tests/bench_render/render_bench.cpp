@@ -96,7 +96,10 @@ void frameCost(benchmark::State& state, const std::string& file, ShadowMethod me
     int frame = 0;
     auto renderOne = [&] {
         // Moving: +-0.2 degrees of yaw, never a cut, never the same view twice in a row.
-        if (moving) settings.camera.yawDeg = baseYaw + ((frame++ % 2) ? 0.2 : -0.2) * (1.0 + 1e-3 * frame);
+        if (moving) {
+            const int step = frame++;
+            settings.camera.yawDeg = baseYaw + ((step % 2) ? 0.2 : -0.2) * (1.0 + 1e-3 * step);
+        }
         FrameStats stats = renderer->render(f->scene, settings, 0.0, viewport);
         glFinish();  // the frame's cost includes the GPU's work
         return stats;

@@ -256,7 +256,9 @@ protected:
         const Classification k = classify(render(scene, s), s, light, 0.25);
         EXPECT_GT(k.lit, 1000);
         // The offset must not move the shadow off its caster (false light).
-        if (normalOffset > 0.0) EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << "normal offset " << normalOffset;
+        if (normalOffset > 0.0) {
+            EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << "normal offset " << normalOffset;
+        }
         return double(k.litButDark) / std::max(1, k.lit);
     }
 };

@@ -18,7 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+// Appended, not "'" + string: gcc 12 warns (-Wrestrict, a false positive) on that operator+.
+std::string quoted(const fs::path& p) {
+    std::string q = "'";
+    q.append(p.string()).append("'");
+    return q;
+}
 
 std::string readFile(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
