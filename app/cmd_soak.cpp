@@ -174,7 +174,8 @@ void runSoak(const SoakOptions& options) {
     std::printf("live GL objects: %d .. %d; GL errors: %zu\n", curve.minObjects, curve.maxObjects, debugLog.errorCount);
     bool ok = true;
     if (growth > options.rssTolerance) {
-        std::cerr << "shadowlab soak: resident memory grew " << 100.0 * growth << "% over the first measured cycle's peak, more than "
+        std::cerr << "shadowlab soak: resident memory grew " << 100.0 * growth
+                  << "% over the first measured cycle's peak, more than "
                   << 100.0 * options.rssTolerance << "%\n";
         ok = false;
     }

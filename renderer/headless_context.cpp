@@ -1,6 +1,7 @@
 #include "headless_context.h"
 
 #include "gl/gl.h"
+#include "gl/sanitizer_support.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -85,6 +86,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string& error) {
             eglTerminate(display);
             continue;
         }
+        gl::keepLoadedLibrariesMappedForLeakReports();
         std::unique_ptr<HeadlessContext> result(new HeadlessContext());
         result->display_ = display;
         result->context_ = context;

@@ -1,5 +1,6 @@
 #include "renderer.h"
 #include "renderer_frame.h"
+#include "gl/sanitizer_support.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -58,6 +59,7 @@ bool Renderer::lightFacingIsCounterClockwise(const glm::dmat4& m, const LightFra
 }
 
 std::unique_ptr<Renderer> Renderer::create(std::string& error) {
+    gl::keepLoadedLibrariesMappedForLeakReports();  // the viewer's GLX context too (ASan builds only)
     std::unique_ptr<Renderer> r(new Renderer());
     auto forward = MaterialPrograms::build("forward.vert", "forward.frag", "", error);
     if (!forward) return nullptr;
