@@ -7,7 +7,8 @@
 # less) stops that target's run, leaves the input in BUILD/fuzz-artifacts/ and makes the script
 # exit 1 — copy the input into tests/fuzz_regressions/TARGET/ so CTest replays it from then on.
 # Usage: fuzz/run_fuzzers.sh [RUNS=1000000] [BUILD=build-fuzz] [TARGETS="scene settings"]
-# Environment: BUILD_JOBS (default nproc), SHADOWLAB_SHARED_SCENES, CMAKE_CXX_COMPILER_LAUNCHER (ccache).
+# Environment: BUILD_JOBS (default nproc), MAX_SECONDS (stop a target after that long even short
+# of RUNS; default 0 = no limit), SHADOWLAB_SHARED_SCENES, CMAKE_CXX_COMPILER_LAUNCHER (ccache).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-1000000}
@@ -35,7 +36,7 @@ for target in $targets; do
   start=$(date +%s)
   # One process (no -jobs: with -jobs libFuzzer moves the output into fuzz-N.log files).
   rc=0
-  "$build/fuzz/fuzz_$target" "$build/corpus/$target" -runs="$runs" -timeout=1 -rss_limit_mb=2048 \
+  "$build/fuzz/fuzz_$target" "$build/corpus/$target" -runs="$runs" -max_total_time="${MAX_SECONDS:-0}" -timeout=1 -rss_limit_mb=2048 \
     -malloc_limit_mb=256 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$build/fuzz-artifacts/${target}-" >"$log" 2>&1 || rc=$?
   grep -E "^stat::|^Done|ERROR:|SUMMARY:|^artifact_prefix|Test unit written" "$log" || true
