@@ -219,7 +219,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     }
     if (frame.shadowed && !frame.cascaded) {
         frame.worldToShadowClip = frame.shadow.worldToShadowClip;  // w > 0 over B by contract
-        frame.linearDepth = settings.bias.distribution == DepthDistribution::Linear;
+        frame.linearDepth = settings.bias.distribution == DepthDistribution::Linear ||
+                            (settings.bias.distribution == DepthDistribution::Auto &&
+                             (settings.method == ShadowMethod::Lispsm || settings.method == ShadowMethod::Psm));
         // Linear depth grows away from the light whatever the warp, so it never needs reversing.
         frame.reversedDepth = frame.shadow.reverseDepthTest && !frame.linearDepth;
         frame.linear = frame.shadow.linearDepth;

@@ -213,8 +213,10 @@ bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
 bool drawBiasPanel(Settings& s) {
     bool changed = false;
     BiasSettings& b = s.bias;
-    static const DepthDistribution kDist[] = {DepthDistribution::Hyperbolic, DepthDistribution::Linear};
-    static const char* const kDistNames[] = {"hyperbolic (post-perspective z)", "linear (light-space distance)"};
+    static const DepthDistribution kDist[] = {DepthDistribution::Auto, DepthDistribution::Hyperbolic,
+                                              DepthDistribution::Linear};
+    static const char* const kDistNames[] = {"auto (linear for the warps)", "hyperbolic (post-perspective z)",
+                                             "linear (light-space distance)"};
     changed |= enumCombo("z-distribution", b.distribution, kDist, kDistNames,
                          "Thesis 5.3, Fig. 5.6: the perspective warps store hyperbolic z (1/w); a linear light-space "
                          "depth (as in TSM) makes the bias uniform over the map.");

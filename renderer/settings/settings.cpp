@@ -25,7 +25,8 @@ NLOHMANN_JSON_SERIALIZE_ENUM(ShadowMethod, {{ShadowMethod::SsmFocused, "ssm"},
                                             {ShadowMethod::Psm, "psm"},
                                             {ShadowMethod::Lispsm, "lispsm"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(DepthDistribution, {{DepthDistribution::Hyperbolic, "hyperbolic"},
-                                                 {DepthDistribution::Linear, "linear"}})
+                                                 {DepthDistribution::Linear, "linear"},
+                                                 {DepthDistribution::Auto, "auto"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(DepthOffset, {{DepthOffset::None, "none"},
                                            {DepthOffset::Constant, "constant"},
                                            {DepthOffset::SlopeScale, "slope"}})

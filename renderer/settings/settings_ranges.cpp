@@ -84,7 +84,7 @@ const Choices kChoices[] = {
     {"method", "ssm, ssm-unfocused, psm, lispsm"},
     {"viewMode", "lit, shadow-term, aliasing, aliasing-raw"},
     {"light.source", "scene, sun, spot"},
-    {"bias.distribution", "hyperbolic, linear"},
+    {"bias.distribution", "hyperbolic, linear, auto"},
     {"bias.mode", "none, constant, slope"},
     {"csm.perSplit", "ssm, stable, lispsm"},
     {"filter.filter", "nearest, pcf2x2, pcf3x3, pcf4x4"},
