@@ -22,7 +22,12 @@ cmake --build "$build" -j"${BUILD_JOBS:-$(nproc)}" --target fuzz_scene fuzz_sett
 
 mkdir -p "$build/corpus/scene" "$build/corpus/settings" "$build/fuzz-artifacts"
 if [[ -d $scenes ]]; then
-  find "$scenes" \( -name '*.glb' -o -name '*.gltf' \) -size -2M -exec cp -n {} "$build/corpus/scene/" \;
+  # Named by their path below $scenes: Box/glTF/Box.gltf and Box/glTF-Embedded/Box.gltf are both seeds.
+  find "$scenes" \( -name '*.glb' -o -name '*.gltf' \) -size -2M -print0 |
+    while IFS= read -r -d '' file; do
+      relative=${file#"$scenes"/}
+      cp -n "$file" "$build/corpus/scene/${relative//\//_}"
+    done
 else
   echo "note: no shared scenes at $scenes (set SHADOWLAB_SHARED_SCENES); seeding with the fixtures only"
 fi
