@@ -163,7 +163,8 @@ void Renderer::setCascadeUniforms(const gl::Program& program, const Frame& frame
     const double constant = s.bias.mode == DepthOffset::Constant ? s.bias.constant : 0.0;
     for (std::size_t i = 0; i < cascades.splits.size(); ++i) {
         const CascadeSplit& split = cascades.splits[i];
-        const std::string index = "[" + std::to_string(i) + "]";
+        std::string index(1, '[');  // appended, not "[" + ...: gcc 12 warns falsely (-Wrestrict) on that
+        index.append(std::to_string(i)).push_back(']');
         program.set("uCascadeClip" + index, glm::mat4(splitMatrix(split) * toOrigin));
         program.set("uCascadeNear" + index, float(split.zNear));
         program.set("uCascadeFar" + index, float(split.zFar));
