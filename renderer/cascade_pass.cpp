@@ -66,8 +66,7 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     frame.shadow = first->setup;  // overlays and read-outs show the first split that sees something
     stats.shadow = frame.shadow.diagnostics;
     lastSetup_ = frame.shadow;
-    frame.linearDepth = s.bias.distribution == DepthDistribution::Linear ||
-                        (s.bias.distribution == DepthDistribution::Auto && s.csm.perSplit == SplitParameterization::Lispsm);
+    frame.linearDepth = linearShadowDepth(s);
     frame.reversedDepth = false;  // SSM, stable SSM and LiSPSM never reverse the test (only PSM does)
     frame.linear = first->setup.linearDepth;
 

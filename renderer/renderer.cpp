@@ -210,7 +210,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // sample receivers from there on (math/lispsm_search.h).
         if (visible.nearest > 0.0) params.lispsm.pseudoNear = visible.nearest;
         params.receiverPoints = visible.receivers;
-        if (frame.light.type == LightType::Spot) params.fineReceiverPoints = visible.fineReceivers;
+        params.fineReceiverPoints = visible.fineReceivers;  // spot lights only (visibleDepthRange)
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
         frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds, params);
         stats.shadow = frame.shadow.diagnostics;
@@ -219,9 +219,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     }
     if (frame.shadowed && !frame.cascaded) {
         frame.worldToShadowClip = frame.shadow.worldToShadowClip;  // w > 0 over B by contract
-        frame.linearDepth = settings.bias.distribution == DepthDistribution::Linear ||
-                            (settings.bias.distribution == DepthDistribution::Auto &&
-                             (settings.method == ShadowMethod::Lispsm || settings.method == ShadowMethod::Psm));
+        frame.linearDepth = linearShadowDepth(settings);
         // Linear depth grows away from the light whatever the warp, so it never needs reversing.
         frame.reversedDepth = frame.shadow.reverseDepthTest && !frame.linearDepth;
         frame.linear = frame.shadow.linearDepth;
@@ -273,6 +271,7 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.height = std::max(16, frame.viewport.height / 4);
     view.sceneLoad = sceneLoads_;
     view.sceneVersion = sceneVersion_;
+    view.fineReceivers = frame.light.type == LightType::Spot;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
             setShadowClip(p, viewProjection, frame.view.eye);

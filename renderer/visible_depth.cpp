@@ -18,7 +18,7 @@ GLsync asSync(void* fence) { return static_cast<GLsync>(fence); }
 
 bool DepthView::sameAs(const DepthView& o) const {
     return viewProjection == o.viewProjection && width == o.width && height == o.height && sceneLoad == o.sceneLoad &&
-           sceneVersion == o.sceneVersion;
+           sceneVersion == o.sceneVersion && fineReceivers == o.fineReceivers;
 }
 
 bool DepthView::isCutFrom(const DepthView& o, const VisibleDepthRange& measured) const {
@@ -124,7 +124,8 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
     };
     sampleGrid(kGridX, kGridY, out.receivers);
     // The fine grid, for spot cones that light a small part of the image (math/lispsm_search.h).
-    sampleGrid(ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY, out.fineReceivers);
+    if (view.fineReceivers)
+        sampleGrid(ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY, out.fineReceivers);
     return out;
 }
 

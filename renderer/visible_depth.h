@@ -41,6 +41,7 @@ struct DepthView {
     int width = 0, height = 0;  // pre-pass size
     std::uint64_t sceneLoad = 0;     // which scene upload (a new scene is a cut)
     std::uint64_t sceneVersion = 0;  // instance updates (animation) since: not a cut, but not the same view
+    bool fineReceivers = false;      // also sample the fine receiver grid (spot lights only use it)
     bool sameAs(const DepthView& other) const;
     // Too far from `other` for a measurement of `other` to bound this view's depths.
     bool isCutFrom(const DepthView& other, const VisibleDepthRange& measured) const;

@@ -226,6 +226,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     std::vector<SurfacePoint> measuredStorage;
     const std::vector<SurfacePoint>& measured =
         receiversInLight(light, params.receiverPoints, params.fineReceiverPoints, measuredStorage);
+    const bool fineJoined = &measured == &measuredStorage;
 
     glm::dmat4 M{1.0};
     bool reverse = false;
@@ -249,8 +250,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         }
         case ShadowMethod::Psm: {
             const auto receiverSets = params.psmGuard ? psmGuardSets(view, light, receiverBody, receiverVertices,
-                                                                     depthNear, depthFar, measured,
-                                                                     &measured == &measuredStorage)
+                                                                     depthNear, depthFar, measured, fineJoined)
                                                       : std::vector<std::vector<ReceiverSample>>{};
             M = guardedPsm(view, basis, light, bv, uniformMatrix(ls, bv), params.psmGuard ? &receiverSets : nullptr,
                            diag, reverse);

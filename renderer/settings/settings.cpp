@@ -319,4 +319,10 @@ bool parseMethod(std::string_view name, ShadowMethod& method) {
     return false;
 }
 
+bool linearShadowDepth(const Settings& s) {
+    if (s.bias.distribution != DepthDistribution::Auto) return s.bias.distribution == DepthDistribution::Linear;
+    if (s.csm.enabled) return s.csm.perSplit == SplitParameterization::Lispsm;
+    return s.method == ShadowMethod::Lispsm || s.method == ShadowMethod::Psm;
+}
+
 }  // namespace shadowlab

@@ -224,4 +224,8 @@ std::vector<std::string> sceneNotices(const Settings& settings, std::size_t scen
 const char* methodName(ShadowMethod method);  // "ssm", "ssm-unfocused", "psm", "lispsm"
 bool parseMethod(std::string_view name, ShadowMethod& method);
 
+// Whether the shadow maps these settings render store linear depth: bias.distribution, with Auto
+// resolved for what is drawn (the warps: LiSPSM, PSM, cascades with LiSPSM per split).
+bool linearShadowDepth(const Settings& settings);
+
 }  // namespace shadowlab

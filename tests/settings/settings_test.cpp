@@ -198,5 +198,28 @@ TEST(Settings, SanitizeClampsCascadesAndDropsBadManualSplits) {
     EXPECT_GE(changes.size(), 4u);
 }
 
+// bias.distribution=auto: linear depth exactly for the warped maps; explicit values win.
+TEST(Settings, AutoDepthDistributionIsLinearForTheWarpsOnly) {
+    Settings s;
+    EXPECT_EQ(s.bias.distribution, DepthDistribution::Auto);
+    for (auto [method, linear] : {std::pair{ShadowMethod::SsmFocused, false}, {ShadowMethod::SsmUnfocused, false},
+                                  {ShadowMethod::Psm, true}, {ShadowMethod::Lispsm, true}}) {
+        s.method = method;
+        EXPECT_EQ(linearShadowDepth(s), linear) << methodName(method);
+    }
+    s.csm.enabled = true;  // the cascades' own parameterisation decides, not `method`
+    for (auto [split, linear] : {std::pair{SplitParameterization::Ssm, false}, {SplitParameterization::StableSsm, false},
+                                 {SplitParameterization::Lispsm, true}}) {
+        s.csm.perSplit = split;
+        EXPECT_EQ(linearShadowDepth(s), linear) << splitParameterizationName(split);
+    }
+    s.bias.distribution = DepthDistribution::Hyperbolic;
+    EXPECT_FALSE(linearShadowDepth(s));
+    s.bias.distribution = DepthDistribution::Linear;
+    s.csm.enabled = false;
+    s.method = ShadowMethod::SsmFocused;
+    EXPECT_TRUE(linearShadowDepth(s));
+}
+
 }  // namespace
 }  // namespace shadowlab
