@@ -4,6 +4,7 @@
 //   gltf_container.cpp   file bytes, GLB layout, JSON size/depth, asset and extensions
 //   gltf_accessors.cpp   byte ranges and accessor decoding (sparse, normalized, shared)
 //   gltf_textures.cpp    image capture, header checks and the texture budget, decoding
+//   image_decode.cpp     stb_image compiled privately, every allocation bounded by the header
 //   gltf_meshes.cpp      materials, primitives, the geometry budget
 //   gltf_nodes.cpp       nodes, lights, cameras, the instance budget, animations
 //   gltf_loader.cpp      the steps in order, load limits

@@ -1,14 +1,13 @@
 // Base colour textures: images captured encoded while tinygltf parses, their size read from the
 // image header (stb_image's info call: a few bytes, no pixels) and checked against the texture
 // budget *before* anything is decoded, one decode per (image, sampler), decoding in parallel.
-// A 16384^2 PNG of a few KB would otherwise allocate 1 GiB before anyone could say no.
+// A 16384^2 PNG of a few KB would otherwise allocate 1 GiB before anyone could say no; a small
+// header over a zlib bomb is bounded inside the decoder (scenes/image_decode.cpp).
 #include "scenes/gltf_internal.h"
-
-#include <stb_image.h>
+#include "scenes/image_decode.h"
 
 #include <algorithm>
 #include <atomic>
-#include <limits>
 #include <thread>
 
 namespace shadowlab::gltf {
@@ -22,32 +21,18 @@ std::string imageLabel(const tinygltf::Model& m, int image) {
     return text;
 }
 
-std::string stbReason() {
-    const char* reason = stbi_failure_reason();
-    return reason ? reason : "unknown reason";
-}
-
-// Decodes to RGBA8 (stb converts grey, grey-alpha, RGB and 16-bit channels); checks the result
-// against the size the header promised, which the budget was charged for.
+// Decodes to RGBA8; checks the result against the size the header promised, which the budget was
+// charged for.
 bool decodeRgba8(const std::vector<std::uint8_t>& bytes, Texture& texture, std::string& reason) {
-    if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
-        reason = "more than 2 GB of encoded data";
-        return false;
-    }
-    int width = 0, height = 0, channels = 0;
-    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
-    if (!pixels) {
-        reason = stbReason();
-        return false;
-    }
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba8;
+    if (!decoder::decodeRgba8(bytes, width, height, rgba8, reason)) return false;
     if (width != texture.width || height != texture.height) {
-        stbi_image_free(pixels);
         reason = "decoded to " + std::to_string(width) + "x" + std::to_string(height) + ", its header says " +
                  std::to_string(texture.width) + "x" + std::to_string(texture.height);
         return false;
     }
-    texture.rgba8.assign(pixels, pixels + std::size_t(width) * std::size_t(height) * 4);
-    stbi_image_free(pixels);
+    texture.rgba8 = std::move(rgba8);
     return true;
 }
 
@@ -102,11 +87,9 @@ bool captureImage(tinygltf::Image* image, const int index, std::string* err, std
 // Reads the header only; false (with a warning: the material falls back to its factor) when the
 // image alone or the running total is over the texture budget. An unreadable header is an error.
 bool Converter::imageFitsBudget(int image, int& width, int& height) {
-    const std::vector<std::uint8_t>& bytes = *images.encoded.at(image);
-    int channels = 0;
-    if (bytes.size() > std::size_t(std::numeric_limits<int>::max()) ||
-        !stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels))
-        fail(imageLabel(m, image) + " cannot be decoded (" + stbReason() + ")");
+    std::string reason;
+    if (!decoder::readSize(*images.encoded.at(image), width, height, reason))
+        fail(imageLabel(m, image) + " cannot be decoded (" + reason + ")");
     if (width <= 0 || height <= 0) fail(imageLabel(m, image) + " has no pixels (" + std::to_string(width) + "x" + std::to_string(height) + ")");
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     const LoadLimits& limits = options.limits;

@@ -1,5 +1,5 @@
 #pragma once
-// Small glTF files built in memory for the loader tests (a triangle, GLB packing, tiny PNGs) and a
+// Small glTF files built in memory for the loader tests (a triangle, GLB packing, PNGs) and a
 // fixture that writes them into a per-test temporary folder.
 #include "scenes/gltf_loader.h"
 
@@ -87,6 +87,66 @@ const Bytes kPng16Gray = {
     0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x10, 0x00, 0x00, 0x00, 0x00, 0x81, 0xD9, 0xFC, 0x15, 0x00, 0x00, 0x00,
     0x0D, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9C, 0x63, 0x68, 0x68, 0xF8, 0xFF, 0x1F, 0x00, 0x06, 0x82, 0x02, 0xFF,
     0xB3, 0xBE, 0x51, 0x33, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
+
+inline std::uint32_t bigEndian(std::uint32_t v) { return __builtin_bswap32(v); }
+
+inline std::uint32_t crc32(const Bytes& bytes) {  // PNG's CRC (ISO 3309), bit by bit
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char b : bytes) {
+        c ^= b;
+        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return ~c;
+}
+
+// IHDR's 13 bytes: size, bit depth, colour type (0 grey, 2 RGB, 6 RGBA), deflate, filter 0, interlace.
+inline Bytes pngHeader(std::uint32_t width, std::uint32_t height, unsigned char depth, unsigned char colour,
+                       bool interlaced = false) {
+    Bytes ihdr;
+    append(ihdr, bigEndian(width));
+    append(ihdr, bigEndian(height));
+    ihdr.insert(ihdr.end(), {depth, colour, 0, 0, static_cast<unsigned char>(interlaced ? 1 : 0)});
+    return ihdr;
+}
+
+// A PNG file: signature, IHDR, one IDAT holding `zlib` (a zlib stream of the filtered rows), IEND.
+inline Bytes pngFile(const Bytes& ihdr, const Bytes& zlib) {
+    auto chunk = [](Bytes& out, const char* type, const Bytes& data) {
+        append(out, bigEndian(std::uint32_t(data.size())));
+        Bytes typed(type, type + 4);
+        typed.insert(typed.end(), data.begin(), data.end());
+        out.insert(out.end(), typed.begin(), typed.end());
+        append(out, bigEndian(crc32(typed)));
+    };
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    chunk(png, "IHDR", ihdr);
+    chunk(png, "IDAT", zlib);
+    chunk(png, "IEND", {});
+    return png;
+}
+
+// A GLB with the triangle, `images` embedded, `textures` (their sources) and one material per texture.
+inline Bytes texturedGlb(const std::vector<Bytes>& images, const std::vector<int>& sources) {
+    json j = triangleJson("");
+    Bytes bin = triangleBin();
+    j["images"] = json::array();
+    for (const Bytes& image : images) {
+        j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", image.size()}});
+        j["images"].push_back({{"bufferView", j["bufferViews"].size() - 1}, {"mimeType", "image/png"}});
+        bin.insert(bin.end(), image.begin(), image.end());
+        pad4(bin);
+    }
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["textures"] = json::array();
+    j["materials"] = json::array();
+    j["meshes"][0]["primitives"] = json::array();
+    for (std::size_t t = 0; t < sources.size(); ++t) {
+        j["textures"].push_back({{"source", sources[t]}});
+        j["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", t}}}}}});
+        j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"material", t}});
+    }
+    return glb(j, bin);
+}
 
 // A temporary folder per test, files written into it, and the loader's verdict on them.
 class LoaderFiles : public testing::Test {
