@@ -1,6 +1,7 @@
 #pragma once
 // Cascades panel (Zhang et al. 2006, parallel-split shadow maps; math/cascades.h): the split
-// count, the practical scheme's lambda or manual positions, the per-split parameterization
+// count, the practical scheme's lambda or manual positions, whether the splits fit the visible
+// depth range, the per-split parameterization
 // (SSM, stable SSM, LiSPSM), the blend band and the split-colour view; read-outs of each split's
 // depth range and texel size. Edits Settings only.
 #include "frame_stats.h"
