@@ -164,10 +164,11 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
                            &state.accuracy.view, &state.accuracy.toggles};
     ctx.ab = &state.ab;
     // Split compare: the read-outs of the view that shows the method, not of the left view.
-    const std::vector<ShadowMethod> shown = ui::shownMethods(state.settings);
+    const std::vector<MethodChoice> shown = ui::shownMethods(state.settings);
     for (std::size_t i = 0; i < shown.size() && i < state.paneStats.size() && !state.ab.active; ++i) {
-        if (shown[i] == ShadowMethod::Lispsm && !ctx.lispsmStats) ctx.lispsmStats = &state.paneStats[i];
-        if (shown[i] == ShadowMethod::Psm && !ctx.psmStats) ctx.psmStats = &state.paneStats[i];
+        if (shown[i].cascaded) continue;  // the LiSPSM / PSM panels read out one map
+        if (shown[i].method == ShadowMethod::Lispsm && !ctx.lispsmStats) ctx.lispsmStats = &state.paneStats[i];
+        if (shown[i].method == ShadowMethod::Psm && !ctx.psmStats) ctx.psmStats = &state.paneStats[i];
     }
     const ui::ControlResult controls = ui::drawControlWindow(state.settings, ctx, float(fbWidth), float(fbHeight));
     state.panelCollapsed = controls.collapsed;

@@ -16,19 +16,15 @@ bool contains(const InsetRect& r, double x, double y) {
 }
 
 std::vector<Pane> splitPanes(const Settings& settings) {
+    const std::vector<MethodChoice> choices = ui::shownMethods(settings);
+    if (choices.size() <= 1) return {Pane{settings, ""}};
+    // Each view renders its own choice (one map, or cascades with its parameterisation per split:
+    // csm-ssm | csm-lispsm), whatever the Method panel's method and csm.enabled say.
     std::vector<Pane> panes;
-    const std::vector<ShadowMethod> methods = ui::shownMethods(settings);
-    // With cascades on, only the first view of the current method renders them: the others show
-    // their one-map method (else every view drew the same cascades under different names).
-    bool cascadesShown = !settings.csm.enabled;
-    for (ShadowMethod m : methods) {
+    for (const MethodChoice& choice : choices) {
         Pane p{settings, ""};
-        p.settings.method = m;
-        if (methods.size() > 1) {
-            p.settings.csm.enabled = !cascadesShown && m == settings.method;
-            cascadesShown |= p.settings.csm.enabled;
-            p.caption = methodChoiceName(methodChoiceOf(p.settings));
-        }
+        applyMethodChoice(p.settings, choice);
+        p.caption = methodChoiceName(methodChoiceOf(p.settings));
         panes.push_back(std::move(p));
     }
     return panes;
@@ -67,7 +63,8 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
             return height * aspectNum / aspectDen * squares + kLayerGap * (squares - 1);
         }
     };
-    const int layers = settings.csm.enabled ? std::clamp(settings.csm.splits, 1, 4) : 1;
+    // The insets show the left view: in a split compare its own choice, one map or cascades.
+    const int layers = ui::shownMethods(settings).front().cascaded ? std::clamp(settings.csm.splits, 1, 4) : 1;
     std::vector<Slot> slots = {{&l.shadowMapInset, settings.overlays.shadowMapInset, InsetKind::ShadowMap, 1, 1, layers},
                                {&l.lightViewInset, settings.overlays.lightViewInset, InsetKind::LightView, 1, 1, layers},
                                {&l.observerInset, settings.overlays.observerInset, InsetKind::Observer, 4, 3}};

@@ -235,7 +235,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     if (frame.cascaded) {
         cascadeShadowPass(frame, stats);
     } else if (frame.shadowed) {
-        for (CascadeMaps& maps : cascadePool_) maps.release();
+        // One view switched to one map frees the cascade arrays; a split compare that mixes one
+        // map and cascades (lispsm | csm-lispsm) keeps them for its cascaded views.
+        if (settings.compare.count <= 1)
+            for (CascadeMaps& maps : cascadePool_) maps.release();
         ShadowMapKey key = shadowMapKey(frame);
         currentMap_ = selectShadowMap(key, settings.compare.count);
         stats.shadowMapReused = settings.skip.reuseShadowMap && shadowMap().holds(key);

@@ -2,6 +2,7 @@
 
 #include "cascade_panel.h"
 #include "frame_setup.h"
+#include "settings/method_choice.h"
 #include "widgets.h"
 
 #include <imgui.h>
@@ -9,7 +10,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace shadowlab::ui {
 
@@ -78,6 +83,39 @@ bool methodCombo(const char* label, ShadowMethod& method, const char* tooltip) {
                 method = m;
             }
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", methodTip(m));
+        }
+        ImGui::EndCombo();
+    }
+    tip(tooltip);
+    return changed;
+}
+
+// A split compare view's choice: the one-map methods, then cascades with each parameterisation
+// per split (the names of settings/method_choice.h).
+bool methodChoiceCombo(const char* label, MethodChoice& choice, const char* tooltip) {
+    static const SplitParameterization kPerSplit[] = {SplitParameterization::Ssm, SplitParameterization::StableSsm,
+                                                      SplitParameterization::Lispsm};
+    static const char* const kPerSplitLabels[] = {"CSM, focused SSM per split", "CSM, stable SSM per split",
+                                                  "CSM, LiSPSM per split"};
+    std::vector<std::pair<MethodChoice, std::string>> options;
+    for (ShadowMethod m : kMethods) options.push_back({{m, false, {}}, methodLabel(m)});
+    for (std::size_t i = 0; i < std::size(kPerSplit); ++i)
+        options.push_back({{ShadowMethod::Lispsm, true, kPerSplit[i]}, kPerSplitLabels[i]});
+    std::string current = methodChoiceName(choice);  // a plain "csm" from a view file: csm.perSplit
+    for (const auto& [c, text] : options)
+        if (c.cascaded == choice.cascaded && (c.cascaded ? c.perSplit == choice.perSplit : c.method == choice.method))
+            current = text;
+    bool changed = false;
+    if (ImGui::BeginCombo(label, current.c_str())) {
+        for (const auto& [c, text] : options) {
+            if (ImGui::Selectable(text.c_str(), c == choice)) {
+                changed = !(c == choice);
+                choice = c;
+            }
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("%s", c.cascaded ? "Cascaded shadow maps (Zhang et al. 2006): csm.splits layers of "
+                                                     "shadowMapSize^2, with the Cascades panel's split settings."
+                                                   : methodTip(c.method));
         }
         ImGui::EndCombo();
     }
@@ -524,7 +562,7 @@ bool drawOverlayPanel(Settings& s, ObserverView& observer) {
 bool drawComparePanel(Settings& s) {
     bool changed = false;
     CompareSettings& c = s.compare;
-    if (c.methods.size() < 3) c.methods.resize(3, ShadowMethod::Lispsm);
+    if (c.methods.size() < 3) c.methods.resize(3, MethodChoice{ShadowMethod::Lispsm, false, {}});
     changed |= ImGui::RadioButton("single", &c.count, 1);
     ImGui::SameLine();
     changed |= ImGui::RadioButton("2 views", &c.count, 2);
@@ -536,9 +574,11 @@ bool drawComparePanel(Settings& s) {
     for (int i = 0; i < 3; ++i) {
         ImGui::BeginDisabled(i >= c.count);
         const std::string label = "view " + std::to_string(i + 1);
-        changed |= methodCombo(
+        changed |= methodChoiceCombo(
             label.c_str(), c.methods[std::size_t(i)],
-            "Method of this split view (thesis 8.3, Figs. 8.10-8.12 compare LiSPSM with uniform maps this way).");
+            "Method of this split view, one map or cascades (thesis 8.3, Figs. 8.10-8.12 compare LiSPSM with "
+            "uniform maps this way; csm-ssm | csm-lispsm asks whether a warp helps on top of splitting). Each view "
+            "renders its own choice, whatever the Method panel shows.");
         ImGui::EndDisabled();
     }
     ImGui::EndDisabled();

@@ -4,12 +4,15 @@
 
 namespace shadowlab::ui {
 
-std::vector<ShadowMethod> shownMethods(const Settings& settings) {
-    if (settings.compare.count <= 1) return {settings.method};
-    std::vector<ShadowMethod> methods;
-    for (int i = 0; i < settings.compare.count && i < int(settings.compare.methods.size()); ++i)
-        methods.push_back(settings.compare.methods[std::size_t(i)]);
-    if (methods.empty()) methods.push_back(settings.method);
+std::vector<MethodChoice> shownMethods(const Settings& settings) {
+    if (settings.compare.count <= 1) return {methodChoiceOf(settings)};
+    std::vector<MethodChoice> methods;
+    for (int i = 0; i < settings.compare.count && i < int(settings.compare.methods.size()); ++i) {
+        Settings view = settings;  // a plain "csm" resolves to csm.perSplit: "csm-stable"
+        applyMethodChoice(view, settings.compare.methods[std::size_t(i)]);
+        methods.push_back(methodChoiceOf(view));
+    }
+    if (methods.empty()) methods.push_back(methodChoiceOf(settings));
     return methods;
 }
 
@@ -19,12 +22,10 @@ std::string screenshotFileName(const Settings& settings, std::time_t when) {
     localtime_r(&when, &local);
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
     std::string methods;
-    for (ShadowMethod m : shownMethods(settings)) {
+    for (const MethodChoice& m : shownMethods(settings)) {
         if (!methods.empty()) methods += "-vs-";
-        methods += methodName(m);
+        methods += methodChoiceName(m);
     }
-    // One view with cascades: "csm-lispsm" (a split compare names its methods).
-    if (settings.compare.count <= 1 && settings.csm.enabled) methods = methodChoiceName(methodChoiceOf(settings));
     return "shadowlab-" + methods + "-" + stamp + ".png";
 }
 

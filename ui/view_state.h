@@ -8,10 +8,12 @@
 
 namespace shadowlab::ui {
 
-// The methods on screen: settings.method alone, or the split-compare list (compare.count of them).
-std::vector<ShadowMethod> shownMethods(const Settings& settings);
+// The methods on screen: what the settings render (one map or cascades) alone, or the
+// split-compare list (compare.count of them, each view its own choice; a plain "csm" resolved to
+// csm.perSplit, so every cascaded choice names its parameterisation).
+std::vector<MethodChoice> shownMethods(const Settings& settings);
 
-// F12 screenshot name: shadowlab-<method>-<local time>.png, or shadowlab-ssm-vs-psm-vs-lispsm-...
+// F12 screenshot name: shadowlab-<method>-<local time>.png, or shadowlab-ssm-vs-csm-lispsm-...
 // for split views, so a picture says which methods it shows.
 std::string screenshotFileName(const Settings& settings, std::time_t when);
 

@@ -2,24 +2,17 @@
 // A shadow method as the command line (`--method`), `render --method all`, the bench spec's
 // "methods" and a split compare name it: one map (ssm, ssm-unfocused, psm, lispsm) or cascaded
 // shadow maps with a parameterisation per split (csm-ssm, csm-stable, csm-lispsm; plain "csm"
-// keeps the settings' csm.perSplit). Applying a choice to Settings is the one place that knows
+// keeps the settings' csm.perSplit); the struct MethodChoice is in settings/settings.h (the
+// split compare's list holds it). Applying a choice to Settings is the one place that knows
 // that a cascaded choice is csm.enabled + csm.perSplit and a one-map choice is method with
 // csm.enabled off.
 #include "settings/settings.h"
 
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace shadowlab {
-
-struct MethodChoice {
-    ShadowMethod method = ShadowMethod::Lispsm;  // one map (ignored when cascaded)
-    bool cascaded = false;
-    std::optional<SplitParameterization> perSplit;  // cascaded: none = keep csm.perSplit
-    bool operator==(const MethodChoice&) const = default;
-};
 
 // "lispsm", "csm-stable", "csm".
 std::string methodChoiceName(const MethodChoice& choice);

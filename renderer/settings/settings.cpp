@@ -1,5 +1,7 @@
 #include "settings/settings.h"
 
+#include "settings/method_choice.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -64,6 +66,12 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DisplaySettings, exposureEv, toneMapping, hem
                                    groundPlane)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OverlaySettings, shadowMapInset, lightViewInset, observerInset, drawB, drawV,
                                    drawS, drawP, depthWindowLow, depthWindowHigh, insetSize)
+// A split compare's view as its name; checkLeaf has checked it against the names before this runs.
+void to_json(json& j, const MethodChoice& choice) { j = methodChoiceName(choice); }
+void from_json(const json& j, MethodChoice& choice) {
+    if (!j.is_string() || !parseMethodChoice(j.get<std::string>(), choice))
+        throw json::type_error::create(302, std::string("expected one of ") + methodChoiceNames(), &j);
+}
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,

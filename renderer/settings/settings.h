@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -132,9 +133,24 @@ struct OverlaySettings {
     bool operator==(const OverlaySettings&) const = default;
 };
 
+// A shadow method as `--method`, a split compare's views and the bench name it: one map, or
+// cascades with a parameterisation per split. Defined here (for CompareSettings); its names
+// ("lispsm", "csm-stable") and how it applies to Settings are in settings/method_choice.h.
+struct MethodChoice {
+    ShadowMethod method = ShadowMethod::Lispsm;  // one map (ignored when cascaded)
+    bool cascaded = false;
+    std::optional<SplitParameterization> perSplit;  // cascaded: none = keep csm.perSplit
+    bool operator==(const MethodChoice& o) const {  // what is rendered: `method` only for one map
+        return cascaded == o.cascaded && (cascaded ? perSplit == o.perSplit : method == o.method);
+    }
+};
+
 struct CompareSettings {
     int count = 1;  // 1 = no split; 2 or 3 views side by side
-    std::vector<ShadowMethod> methods{ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm};
+    // Each view's own choice, stored as its name ("ssm", "csm-lispsm"): views with one-map names
+    // (all a view file had before cascades) load as they were.
+    std::vector<MethodChoice> methods{{ShadowMethod::SsmFocused, false, {}}, {ShadowMethod::Psm, false, {}},
+                                      {ShadowMethod::Lispsm, false, {}}};
     bool operator==(const CompareSettings&) const = default;
 };
 

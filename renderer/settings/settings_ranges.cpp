@@ -3,6 +3,8 @@
 // disagree. Also the notices for settings a scene makes meaningless.
 #include "settings/settings.h"
 
+#include "settings/method_choice.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -88,7 +90,7 @@ const Choices kChoices[] = {
     {"bias.mode", "none, constant, slope"},
     {"csm.perSplit", "ssm, stable, lispsm"},
     {"filter.filter", "nearest, pcf2x2, pcf3x3, pcf4x4"},
-    {"compare.methods", "ssm, ssm-unfocused, psm, lispsm"},
+    {"compare.methods", methodChoiceNames()},  // one-map and cascade names (settings/method_choice.h)
     {"display.toneMapping", "none, pbr-neutral, aces"},
 };
 

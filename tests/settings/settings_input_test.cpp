@@ -74,8 +74,9 @@ TEST(SettingsInput, ChoicesAreListedWhenAValueIsNotOne) {
     EXPECT_TRUE(contains(error, "expects one of none, constant, slope, got 'sloped'")) << error;
     EXPECT_FALSE(fromJsonText(R"({"method": "csm"})", s, error));
     EXPECT_TRUE(contains(error, "ssm, ssm-unfocused, psm, lispsm")) << error;
-    EXPECT_FALSE(setByKey(s, "compare.methods=ssm,csm", error));
-    EXPECT_TRUE(contains(error, "'csm'")) << error;
+    EXPECT_FALSE(setByKey(s, "compare.methods=ssm,csm-psm", error));  // PSM per split is not offered
+    EXPECT_TRUE(contains(error, "'csm-psm'")) << error;
+    EXPECT_TRUE(contains(error, "csm-stable, csm-lispsm")) << error;
     EXPECT_FALSE(setByKey(s, "nothing=1", error));
     EXPECT_TRUE(contains(error, "see `shadowlab settings`")) << error;
 }
@@ -109,9 +110,29 @@ TEST(SettingsInput, MethodListsAreTruncatedToTheThreeViewsUsed) {
     std::string error;
     ASSERT_TRUE(setByKey(s, "compare.methods=psm,psm,lispsm,ssm,ssm", error)) << error;
     const std::vector<std::string> notices = sanitize(s);
-    EXPECT_EQ(s.compare.methods, (std::vector<ShadowMethod>{ShadowMethod::Psm, ShadowMethod::Psm, ShadowMethod::Lispsm}));
+    EXPECT_EQ(s.compare.methods, (std::vector<MethodChoice>{{ShadowMethod::Psm, false, {}},
+                                                            {ShadowMethod::Psm, false, {}},
+                                                            {ShadowMethod::Lispsm, false, {}}}));
     EXPECT_EQ(notices.size(), 1u);
     EXPECT_TRUE(contains(notices.at(0), "5 entries, the first 3 are used"));
+    // A short list is filled from the defaults (ssm, psm, lispsm) after its own entries.
+    ASSERT_TRUE(setByKey(s, "compare.methods=csm-lispsm", error)) << error;
+    EXPECT_EQ(sanitize(s).size(), 1u);
+    EXPECT_EQ(s.compare.methods, (std::vector<MethodChoice>{{ShadowMethod::Lispsm, true, SplitParameterization::Lispsm},
+                                                            {ShadowMethod::Psm, false, {}},
+                                                            {ShadowMethod::Lispsm, false, {}}}));
+}
+
+// `shadowlab settings` offers the cascade names for the compare views.
+TEST(SettingsInput, TheCompareListOffersEveryMethodName) {
+    for (const SettingDescription& d : describeSettings())
+        if (d.key == "compare.methods") {
+            EXPECT_EQ(d.type, "list");
+            EXPECT_TRUE(contains(d.range, "csm-ssm, csm-stable, csm-lispsm")) << d.range;
+            EXPECT_EQ(d.defaultValue, "ssm,psm,lispsm");
+            return;
+        }
+    ADD_FAILURE() << "compare.methods is not listed";
 }
 
 // The listing `shadowlab settings` prints covers every key, with a range for every number that is

@@ -1,5 +1,6 @@
 // The settings contract: JSON round trip, --set keys, refusal of bad input, clamping.
 #include "frame_setup.h"
+#include "settings/method_choice.h"
 #include "settings/settings.h"
 
 #include <gtest/gtest.h>
@@ -63,7 +64,7 @@ TEST(Settings, SetByKeyParsesByTheTypeFound) {
     ASSERT_TRUE(setByKey(s, "camera.position=1,2,3", error)) << error;
     EXPECT_EQ(s.camera.position, glm::dvec3(1, 2, 3));
     ASSERT_TRUE(setByKey(s, "compare.methods=psm,lispsm,ssm", error)) << error;
-    EXPECT_EQ(s.compare.methods[0], ShadowMethod::Psm);
+    EXPECT_EQ(s.compare.methods[0], (MethodChoice{ShadowMethod::Psm, false, {}}));
     EXPECT_FALSE(setByKey(s, "bias.mode=sloped", error));
     EXPECT_FALSE(setByKey(s, "bias=1", error));
     EXPECT_FALSE(setByKey(s, "nothing.here=1", error));
@@ -182,6 +183,40 @@ TEST(Settings, CascadeBlockRoundTripsAndSetsByKey) {
     bool listed = false;
     for (const auto& k : settingKeys(s)) listed |= k.rfind("csm.lambda=", 0) == 0;
     EXPECT_TRUE(listed);
+}
+
+// Split compare views are method names: cascades among them, and a view file from before
+// cascades (one-map names only) loads as it was.
+TEST(Settings, CompareMethodsAreNamesWithCascadesAndOldViewFilesStillLoad) {
+    Settings s;
+    std::string error;
+    ASSERT_TRUE(setByKey(s, "compare.methods=ssm,csm-lispsm,csm-stable", error)) << error;
+    const std::vector<MethodChoice> expected{{ShadowMethod::SsmFocused, false, {}},
+                                             {ShadowMethod::Lispsm, true, SplitParameterization::Lispsm},
+                                             {ShadowMethod::Lispsm, true, SplitParameterization::StableSsm}};
+    EXPECT_EQ(s.compare.methods, expected);
+    const std::string text = toJsonText(s);
+    EXPECT_NE(text.find(R"("csm-lispsm")"), std::string::npos) << text;  // stored as the name
+    Settings back;
+    ASSERT_TRUE(fromJsonText(text, back, error)) << error;
+    EXPECT_EQ(back.compare.methods, expected);
+    // Every name round-trips, the plain "csm" (keeps csm.perSplit) too.
+    for (const char* name : {"ssm", "ssm-unfocused", "psm", "lispsm", "csm", "csm-ssm", "csm-stable", "csm-lispsm"}) {
+        ASSERT_TRUE(setByKey(s, std::string("compare.methods=psm,") + name, error)) << name << ": " << error;
+        ASSERT_TRUE(fromJsonText(toJsonText(s), back, error)) << error;
+        EXPECT_EQ(back.compare.methods, s.compare.methods) << name;
+        EXPECT_EQ(methodChoiceName(back.compare.methods.at(1)), name);
+    }
+    // A view file of an earlier version (compare block with one-map names).
+    Settings old;
+    ASSERT_TRUE(fromJsonText(R"({"method": "lispsm", "compare": {"count": 3, "methods": ["ssm-unfocused", "psm", "lispsm"]}})",
+                             old, error)) << error;
+    EXPECT_EQ(old.compare.count, 3);
+    EXPECT_EQ(old.compare.methods, (std::vector<MethodChoice>{{ShadowMethod::SsmUnfocused, false, {}},
+                                                              {ShadowMethod::Psm, false, {}},
+                                                              {ShadowMethod::Lispsm, false, {}}}));
+    EXPECT_FALSE(fromJsonText(R"({"compare": {"methods": ["ssm", "csm-psm"]}})", old, error));
+    EXPECT_NE(error.find("csm-lispsm"), std::string::npos) << error;  // the message lists the names
 }
 
 TEST(Settings, SanitizeClampsCascadesAndDropsBadManualSplits) {

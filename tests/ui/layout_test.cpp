@@ -151,31 +151,69 @@ TEST(ViewerLayout, WithCascadesTheMapAndLightInsetsHaveASquarePerLayerAndAllFit)
     }
 }
 
-// Issue 13: with csm on, a split compare of ssm | psm | lispsm used to render the same cascades in
-// all three views under three names.
-TEST(SplitPanes, WithCascadesOnlyTheCurrentMethodsViewRendersThem) {
+// Issue 13: each view of a split compare renders its own choice (one map, or cascades with its
+// parameterisation per split), whatever the Method panel's method and csm.enabled say, and is
+// captioned with its name. (Before: csm on drew cascades only in the first view of the method.)
+TEST(SplitPanes, EachViewAppliesItsOwnChoiceOneMapOrCascades) {
     Settings s;
-    s.method = ShadowMethod::Lispsm;
-    s.csm.enabled = true;
-    s.csm.perSplit = SplitParameterization::Lispsm;
+    s.method = ShadowMethod::Psm;
+    s.csm.enabled = false;
+    s.csm.perSplit = SplitParameterization::StableSsm;
     s.compare.count = 3;
-    s.compare.methods = {ShadowMethod::SsmFocused, ShadowMethod::Lispsm, ShadowMethod::Lispsm};
-    const std::vector<app::Pane> panes = app::splitPanes(s);
+    s.compare.methods = {{ShadowMethod::Lispsm, true, SplitParameterization::Ssm},
+                         {ShadowMethod::Lispsm, true, SplitParameterization::Lispsm},
+                         {ShadowMethod::Lispsm, false, {}}};
+    std::vector<app::Pane> panes = app::splitPanes(s);
     ASSERT_EQ(panes.size(), 3u);
+    EXPECT_TRUE(panes[0].settings.csm.enabled);
+    EXPECT_EQ(panes[0].settings.csm.perSplit, SplitParameterization::Ssm);
+    EXPECT_EQ(panes[0].caption, "csm-ssm");
+    EXPECT_TRUE(panes[1].settings.csm.enabled);
+    EXPECT_EQ(panes[1].settings.csm.perSplit, SplitParameterization::Lispsm);
+    EXPECT_EQ(panes[1].caption, "csm-lispsm");
+    EXPECT_FALSE(panes[2].settings.csm.enabled);
+    EXPECT_EQ(panes[2].settings.method, ShadowMethod::Lispsm);
+    EXPECT_EQ(panes[2].caption, "lispsm");
+    // Only method and csm.enabled / perSplit differ from the current settings.
+    for (const app::Pane& p : panes) {
+        Settings rest = p.settings;
+        rest.method = s.method;
+        rest.csm.enabled = s.csm.enabled;
+        rest.csm.perSplit = s.csm.perSplit;
+        EXPECT_EQ(rest, s) << p.caption;
+    }
+    // With csm on, one-map names still render one map; a plain "csm" keeps csm.perSplit.
+    s.csm.enabled = true;
+    s.compare.methods = {{ShadowMethod::SsmFocused, false, {}}, {ShadowMethod::Lispsm, true, {}}, {}};
+    s.compare.count = 2;
+    panes = app::splitPanes(s);
+    ASSERT_EQ(panes.size(), 2u);
     EXPECT_FALSE(panes[0].settings.csm.enabled);
     EXPECT_EQ(panes[0].caption, "ssm");
     EXPECT_TRUE(panes[1].settings.csm.enabled);
-    EXPECT_EQ(panes[1].caption, "csm-lispsm");
-    EXPECT_FALSE(panes[2].settings.csm.enabled);  // the second lispsm view: one map, to compare with
-    EXPECT_EQ(panes[2].caption, "lispsm");
-    // Without cascades nothing changes; a single view keeps its cascades and has no caption.
-    s.csm.enabled = false;
-    for (const app::Pane& p : app::splitPanes(s)) EXPECT_FALSE(p.settings.csm.enabled);
-    s.csm.enabled = true;
+    EXPECT_EQ(panes[1].caption, "csm-stable");
+    // A single view keeps the settings as they are and has no caption.
     s.compare.count = 1;
-    ASSERT_EQ(app::splitPanes(s).size(), 1u);
-    EXPECT_TRUE(app::splitPanes(s)[0].settings.csm.enabled);
-    EXPECT_EQ(app::splitPanes(s)[0].caption, "");
+    panes = app::splitPanes(s);
+    ASSERT_EQ(panes.size(), 1u);
+    EXPECT_EQ(panes[0].settings, s);
+    EXPECT_EQ(panes[0].caption, "");
+}
+
+// The insets follow the left view: with a cascaded left view they get a square per layer even
+// when the current settings have csm off.
+TEST(ViewerLayout, InsetsFollowTheLeftViewsChoiceInASplitCompare) {
+    Settings s = allInsets();
+    s.csm.enabled = false;
+    s.csm.splits = 3;
+    s.compare.count = 2;
+    s.compare.methods = {{ShadowMethod::Lispsm, true, SplitParameterization::Lispsm}, {ShadowMethod::Lispsm, false, {}}};
+    const app::Layout cascaded = app::layoutFrame(1280, 720, true, s);
+    EXPECT_EQ(cascaded.shadowMapInset.width, 3 * cascaded.shadowMapInset.height + 2 * kLayerGap);
+    std::swap(s.compare.methods[0], s.compare.methods[1]);
+    s.csm.enabled = true;
+    const app::Layout oneMap = app::layoutFrame(1280, 720, true, s);
+    EXPECT_EQ(oneMap.shadowMapInset.width, oneMap.shadowMapInset.height);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // read-out (including the degenerate ones), leave the settings alone without input, and a
 // simulated click edits exactly the setting under the mouse.
 #include "panels.h"
+#include "cascade_panel.h"
 #include "view_state.h"
 #include "widgets.h"
 #include "imgui_frame_test.h"
@@ -146,6 +147,37 @@ TEST_F(ImGuiFrameTest, CameraPresetButtonAppliesTheGltfCamera) {
     EXPECT_TRUE(changed);
 }
 
+// The Cascades panel's "fit visible depth" check box edits csm.fitVisibleDepth and nothing else.
+TEST_F(ImGuiFrameTest, CascadePanelFitVisibleDepthCheckboxTogglesOnlyThatSetting) {
+    Settings s;
+    s.csm.enabled = true;
+    int changes = 0;
+    auto draw = [&] {
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(400, 600));
+        ImGui::Begin("cascades", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove);
+        if (drawCascadePanel(s)) ++changes;
+        ImGui::End();
+    };
+    const Settings start = s;
+    Settings expected = s;
+    expected.csm.fitVisibleDepth = !start.csm.fitVisibleDepth;
+    // Click down the left column (check boxes start at the window padding) until the box flips;
+    // clicks on the sliders and other boxes above it are undone.
+    float found = -1.0f;
+    for (float y = 8.0f; y < 300.0f && found < 0.0f; y += 4.0f) {
+        clickAt(ImVec2(14, y), draw);
+        if (s == expected) found = y;
+        s = found < 0.0f ? start : s;
+    }
+    ASSERT_GE(found, 0.0f) << "no fit-visible-depth check box in the panel";
+    EXPECT_FALSE(s.csm.fitVisibleDepth);  // on by default
+    changes = 0;
+    clickAt(ImVec2(14, found), draw);
+    EXPECT_EQ(changes, 1);
+    EXPECT_EQ(s, start);
+}
+
 TEST(Widgets, FormatNumberNamesTheDegenerateValues) {
     EXPECT_EQ(formatNumber(std::numeric_limits<double>::infinity()), "+inf");
     EXPECT_EQ(formatNumber(-std::numeric_limits<double>::infinity()), "-inf");
@@ -160,24 +192,29 @@ namespace shadowlab::ui {
 namespace {
 
 TEST(ViewState, ScreenshotNamesIncludeTheMethods) {
+    const MethodChoice ssm{ShadowMethod::SsmFocused, false, {}}, unfocused{ShadowMethod::SsmUnfocused, false, {}};
     Settings s;
     s.method = ShadowMethod::Psm;
     const std::string single = screenshotFileName(s, 0);
     EXPECT_EQ(single.rfind("shadowlab-psm-", 0), 0u) << single;
     EXPECT_EQ(single.substr(single.size() - 4), ".png");
     s.compare.count = 3;
-    s.compare.methods = {ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused, ShadowMethod::Lispsm};
-    EXPECT_EQ(screenshotFileName(s, 0).rfind("shadowlab-ssm-vs-ssm-unfocused-vs-lispsm-", 0), 0u);
+    s.compare.methods = {ssm, unfocused, {ShadowMethod::Lispsm, true, SplitParameterization::Lispsm}};
+    EXPECT_EQ(screenshotFileName(s, 0).rfind("shadowlab-ssm-vs-ssm-unfocused-vs-csm-lispsm-", 0), 0u)
+        << screenshotFileName(s, 0);
     s.compare.count = 2;
-    EXPECT_EQ(shownMethods(s), (std::vector<ShadowMethod>{ShadowMethod::SsmFocused, ShadowMethod::SsmUnfocused}));
+    EXPECT_EQ(shownMethods(s), (std::vector<MethodChoice>{ssm, unfocused}));
+    // A plain "csm" in the list is shown (and named) with the settings' csm.perSplit.
+    s.csm.perSplit = SplitParameterization::StableSsm;
+    s.compare.methods[1] = {ShadowMethod::Lispsm, true, {}};
+    EXPECT_EQ(shownMethods(s).at(1), (MethodChoice{ShadowMethod::Lispsm, true, SplitParameterization::StableSsm}));
     s.compare.count = 1;
     s.csm.enabled = true;
-    s.csm.perSplit = SplitParameterization::StableSsm;
     EXPECT_EQ(screenshotFileName(s, 0).rfind("shadowlab-csm-stable-", 0), 0u) << screenshotFileName(s, 0);
     s.csm.enabled = false;
     s.compare.count = 2;
     s.compare.methods.clear();  // a hand-edited view without a list still shows something
-    EXPECT_EQ(shownMethods(s), std::vector<ShadowMethod>{ShadowMethod::Psm});
+    EXPECT_EQ(shownMethods(s), (std::vector<MethodChoice>{{ShadowMethod::Psm, false, {}}}));
 }
 
 }  // namespace
