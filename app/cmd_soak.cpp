@@ -126,9 +126,10 @@ void runSoak(const SoakOptions& options) {
         if (!sanitize(probe).empty()) fail("--map-sizes: " + std::to_string(options.mapSizes[i]) + " is not a power of two in 256 .. 8192", 2);
     }
 
-    // llvmpipe's rasterizer threads end a scene (and drop its references to textures) only when its
-    // slot is reused, so which freed shadow maps are still alive at a sample depends on thread
-    // timing: plane-box, 1260 frames, the heap in use at the same phase of each cycle measured
+    // With rasterizer threads, llvmpipe ends a finished scene (dropping its references to textures)
+    // only when it takes that scene for reuse, and it takes the first idle one (Mesa 22,
+    // lp_setup_get_empty_scene), so scenes further down its list keep old maps alive, as many as
+    // thread timing made it allocate: plane-box, 1260 frames, the heap in use at the same phase of each cycle measured
     // 27 .. 98 MB (whole 16 and 64 MB maps) with the driver's threads, 27 MB every cycle without.
     // The soak measures shadowlab's memory, so by default it asks for a single-threaded llvmpipe
     // (other drivers ignore the variable); --driver-threads keeps the driver's choice.
