@@ -45,7 +45,7 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     params.manualSplits = s.csm.manualSplits;
     params.perSplit = s.csm.perSplit;
     params.mapResolution = s.shadowMapSize;
-    params.base = shadowParams(s, frame.view, frame.scene.bounds);
+    params.base = shadowParams(s, frame.shadowView, frame.scene.bounds);
     // The visible depth range and receivers (depth pre-pass): the splits cover what is seen, and
     // each split's LiSPSM search measures the receivers of its own range (math/cascades.h).
     if (s.csm.fitVisibleDepth) {
@@ -54,7 +54,7 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
         params.visibleFar = visible.farthest;
         params.base.receiverPoints = visible.receivers;
     }
-    frame.cascades = computeCascadeSetup(frame.view, shadowLight(frame.light), frame.scene.bounds, params);
+    frame.cascades = computeCascadeSetup(frame.shadowView, shadowLight(frame.light), frame.scene.bounds, params);
     lastCascades_ = frame.cascades;
     const CascadeSplit* first = firstValidSplit(frame.cascades);
     if (!frame.cascades.error.empty() || !first) {
@@ -151,7 +151,11 @@ void Renderer::setCascadeUniforms(const gl::Program& program, const Frame& frame
     const CascadeSetup& cascades = frame.cascades;
     const glm::dmat4 toOrigin = glm::translate(glm::dmat4(1.0), glm::dvec3(glm::vec3(frame.view.eye)));  // as setShadowClip
     program.set("uCascadeCount", int(cascades.splits.size()));
-    program.set("uCascadeForward", glm::vec3(glm::normalize(frame.view.forward)));
+    // The split of a point: its depth along the view the splits were made for (frame.shadowView),
+    // from the origin the shader's points are relative to.
+    const glm::dvec3 splitForward = glm::normalize(frame.shadowView.forward);
+    program.set("uCascadeForward", glm::vec3(splitForward));
+    program.set("uCascadeDepthOffset", float(glm::dot(frame.shadowView.eye - glm::dvec3(glm::vec3(frame.view.eye)), splitForward)));
     program.set("uCascadeBlend", float(s.csm.blendBand));
     program.set("uCascadeColors", s.csm.colorSplits ? 1 : 0);
     // Bias per split: a constant offset means the same world distance per texel in every split, so

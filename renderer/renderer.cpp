@@ -181,7 +181,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     const auto setupStart = Clock::now();
     const double aspect = viewport.height > 0 ? double(viewport.width) / viewport.height : 1.0;
     const ViewFrustum view = viewFrustum(settings.camera, aspect);
-    Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(),
+    const ViewFrustum shadowCamera = shadowCameraRequest_ ? viewFrustum(*shadowCameraRequest_, aspect) : view;
+    Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(), shadowCamera,
                 resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}, {}};
     stats.lightNote = frame.light.note;
     lastSetup_ = ShadowSetup{};  // a frame without shadows must not show the previous frame's B
@@ -197,15 +198,15 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // Neither feature on: no pre-pass at all.
         const VisibleDepthRange visible =
             psmAutoNear || lispsmAutoFar ? visibleDepthRange(frame, stats) : VisibleDepthRange{};
-        ViewFrustum shadowView = view;
+        ViewFrustum shadowView = frame.shadowView;
         // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows
         // (halved: a quarter-resolution pixel may miss thin geometry in front).
-        if (psmAutoNear && 0.5 * visible.nearest > view.zNear)
-            shadowView.zNear = std::min(0.5 * visible.nearest, 0.5 * view.zFar);
+        if (psmAutoNear && 0.5 * visible.nearest > shadowView.zNear)
+            shadowView.zNear = std::min(0.5 * visible.nearest, 0.5 * shadowView.zFar);
         ShadowParams params = shadowParams(settings, shadowView, scene.bounds);
         // Thesis 9.2.5: with a depth-only pass, z_f is the farthest visible depth.
         if (lispsmAutoFar && visible.farthest > 0.0)
-            params.lispsm.virtualFar = std::clamp(visible.farthest, view.zNear * 1.001, view.zFar);
+            params.lispsm.virtualFar = std::clamp(visible.farthest, shadowView.zNear * 1.001, shadowView.zFar);
         // The nearest visible depth, symmetric to z_f: LiSPSM's warp search and PSM's guard
         // sample receivers from there on (math/lispsm_search.h).
         if (visible.nearest > 0.0) params.lispsm.pseudoNear = visible.nearest;
@@ -268,8 +269,13 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
 
 VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
     DepthView view;
-    view.view = frame.view;
-    view.viewProjection = frame.viewProjection;
+    view.view = frame.shadowView;  // the pre-pass sees what the camera the shadows are for sees
+    view.viewProjection = frame.shadowView.projectionMatrix() * frame.shadowView.viewMatrix();
+    const bool ownCamera = shadowCameraRequest_ != nullptr;
+    InstanceList shadowCameraVisible;
+    if (ownCamera)
+        culler_.visible(frame.scene, clipPlanes(view.viewProjection), frame.settings.skip.hierarchicalCulling,
+                        shadowCameraVisible);
     view.width = std::max(16, frame.viewport.width / 4);  // a quarter resolution is enough for a range
     view.height = std::max(16, frame.viewport.height / 4);
     view.sceneLoad = sceneLoads_;
@@ -277,9 +283,9 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.fineReceivers = frame.light.type == LightType::Spot;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
-            setShadowClip(p, viewProjection, frame.view.eye);
+            setShadowClip(p, viewProjection, frame.shadowView.eye);
         });
-        drawScene(programs, frame, frame.visible, false, stats.depthPrePass);
+        drawScene(programs, frame, ownCamera ? shadowCameraVisible : frame.visible, false, stats.depthPrePass);
     };
     const VisibleDepthRange range = visibleDepth_.range(view, frame.settings.skip.asyncDepthReadback, drawDepth, stats);
     unbindPassResources({0});

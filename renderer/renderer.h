@@ -60,9 +60,11 @@ public:
                                               const Aabb& body);
 
     // render() into `viewport`, then the measurement pass of the same frame (renderer_measure.cpp):
-    // the float values of the accuracy instruments, read back into `out`.
+    // the float values of the accuracy instruments, read back into `out`. With `shadowCamera`, the
+    // shadows are set up for that camera while the image is drawn from settings.camera, so two
+    // frames drawn from one camera differ only in their maps (temporal stability, accuracy.h).
     FrameStats renderMeasured(const Scene& scene, const Settings& settings, double seconds, const Viewport& viewport,
-                              MeasureFrame& out);
+                              MeasureFrame& out, const CameraSettings* shadowCamera = nullptr);
 
     // Waits for the GPU timings of the frames in flight (headless renders report real GPU ms) and
     // fills them into lastFrameStats().
@@ -162,6 +164,7 @@ private:
         MeasureTargets* targets = nullptr;  // set only inside renderMeasured
         MeasureFrame* out = nullptr;
     } measureRequest_;
+    const CameraSettings* shadowCameraRequest_ = nullptr;  // set only inside renderMeasured
     GpuTimer shadowTimer_, termTimer_, blurTimer_, forwardTimer_;
     FrameStats lastStats_;
     std::vector<std::pair<std::size_t, GpuTimer*>> timedPasses_;

@@ -12,6 +12,9 @@ struct Renderer::Frame {
     Viewport viewport;
     ViewFrustum view;
     glm::dmat4 viewProjection;
+    // The camera the shadows are set up for (pre-pass, B, warp, splits): `view`, unless
+    // renderMeasured was handed another (the temporal instrument's map-only comparison).
+    ViewFrustum shadowView;
     LightFrame light;
     bool shadowed = false;  // a shadow map is rendered and looked up this frame
     ShadowSetup shadow;

@@ -11,14 +11,16 @@
 namespace shadowlab {
 
 FrameStats Renderer::renderMeasured(const Scene& scene, const Settings& settings, double seconds,
-                                    const Viewport& viewport, MeasureFrame& out) {
+                                    const Viewport& viewport, MeasureFrame& out, const CameraSettings* shadowCamera) {
+    struct Reset {
+        MeasureRequest& request;
+        const CameraSettings*& shadowCamera;
+        ~Reset() { request = {}, shadowCamera = nullptr; }
+    } reset{measureRequest_, shadowCameraRequest_};  // a throwing pass must not leave the requests armed
+    shadowCameraRequest_ = shadowCamera;
     // The measured frame is the settled one (the async visible-depth readback has arrived).
     renderSettled(scene, settings, seconds, viewport);
     measureRequest_ = {&measureTargets_, &out};
-    struct Reset {
-        MeasureRequest& request;
-        ~Reset() { request = {}; }
-    } reset{measureRequest_};  // a throwing pass must not leave the request armed
     out = MeasureFrame{};
     return render(scene, settings, seconds, viewport);
 }

@@ -9,11 +9,12 @@ uniform float uCascadeFar[kMaxCascades];        // far eye distance of each spli
 uniform float uCascadeNear[kMaxCascades];
 uniform vec2 uCascadeLinearRange[kMaxCascades]; // B_i's linear-depth range (linear distribution)
 uniform float uCascadeOffset[kMaxCascades];     // constant offset in split i's depth units
-uniform vec3 uCascadeForward;                   // unit view direction
+uniform vec3 uCascadeForward;                   // unit view direction of the split camera
+uniform float uCascadeDepthOffset;              // that camera's depth of uShadowOrigin, negated
 uniform float uCascadeBlend;                    // fraction of a split's range blended into the next
 uniform bool uCascadeColors;                    // tint each split (split-colour view)
 
-float cascadeEyeDepth(vec3 p) { return dot(p - uShadowOrigin, uCascadeForward); }
+float cascadeEyeDepth(vec3 p) { return dot(p - uShadowOrigin, uCascadeForward) - uCascadeDepthOffset; }
 
 int cascadeIndex(vec3 p) {
     float depth = cascadeEyeDepth(p);
