@@ -45,14 +45,15 @@ ShadowLight truthLight(const Scene& scene, const Settings& settings, double seco
     return shadowLight(resolveLight(scene, settings.light, seconds));
 }
 
-MeasureFrame measureView(Renderer& renderer, const Scene& scene, const Settings& settings, int width, int height) {
+MeasureFrame measureView(Renderer& renderer, const Scene& scene, const Settings& settings, int width, int height,
+                         const CameraSettings* shadowCamera) {
     RenderTarget target(width, height);
     MeasureFrame frame;
     // The measured frame is set up from its own visible depth, not the previous frame's.
     Settings exact = settings;
     exact.skip.asyncDepthReadback = false;
     renderer.renderMeasured(scene, exact, exact.animation.time, Viewport{target.framebuffer(), 0, 0, width, height},
-                            frame);
+                            frame, shadowCamera);
     return frame;
 }
 
@@ -108,6 +109,24 @@ std::vector<TemporalStep> scriptedPath(const CameraSettings& start, double visib
     return path;
 }
 
+namespace {
+
+// The first frame `a` drawn again from its own camera with its shadows set up for `moved`: every
+// pixel shows the same surface point, so a changed state is the map's doing alone.
+void mapOnlyFlips(Renderer& renderer, const Scene& scene, const Settings& settings, const MeasureFrame& a,
+                  const CameraSettings& moved, TemporalFigures& fig) {
+    const MeasureFrame b = measureView(renderer, scene, settings, a.width, a.height, &moved);
+    std::size_t flips = 0;
+    for (std::size_t i = 0; i < a.pixelCount() && i < b.pixelCount(); ++i) {
+        if (!a.receiver[i] || !b.receiver[i]) continue;
+        ++fig.mapComparedPoints;
+        flips += (a.shadowTerm[i] >= kLitThreshold) != (b.shadowTerm[i] >= kLitThreshold);
+    }
+    fig.mapFlipShare = fig.mapComparedPoints > 0 ? double(flips) / double(fig.mapComparedPoints) : 0.0;
+}
+
+}  // namespace
+
 std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& scene, const Settings& settings,
                                                int width, int height, const RayScene& rays) {
     const ShadowLight light = truthLight(scene, settings, settings.animation.time);
@@ -141,6 +160,7 @@ std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& 
             flips += (a.shadowTerm[i] >= kLitThreshold) != (b.shadowTerm[j] >= kLitThreshold);
         }
         fig.flipShare = fig.comparedPoints > 0 ? double(flips) / double(fig.comparedPoints) : 0.0;
+        mapOnlyFlips(renderer, scene, settings, a, step.to, fig);
         result.push_back(fig);
     }
     return result;

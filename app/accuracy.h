@@ -45,13 +45,20 @@ AccuracyReport analyseFrame(const MeasureFrame& frame, const RayScene* rays, con
 // The light the truth traces toward: the one the settings select at `seconds`.
 ShadowLight truthLight(const Scene& scene, const Settings& settings, double seconds);
 
-// Renders `settings` at width x height into an internal target and measures it.
-MeasureFrame measureView(Renderer& renderer, const Scene& scene, const Settings& settings, int width, int height);
+// Renders `settings` at width x height into an internal target and measures it (with its shadows
+// set up for `shadowCamera` where one is given: Renderer::renderMeasured).
+MeasureFrame measureView(Renderer& renderer, const Scene& scene, const Settings& settings, int width, int height,
+                         const CameraSettings* shadowCamera = nullptr);
 
 // Temporal stability (shimmering): frame pairs along a scripted path, each pair's second frame
 // a small camera move from the first. For every receiver of the first frame whose world point is
 // seen again in the second (reprojected to the same surface point within a pixel), a flip is a
 // change of the rendered state (PCF >= 0.5) while the ray-cast truth of both points agrees.
+// That compares a point with the surface point under its new pixel (up to two pixel footprints
+// away), which may lie across a rendered shadow edge: a floor that even a map that does not move
+// has. So each step also has the map's own share: the first frame drawn again from its own camera
+// with the shadows set up for the moved one, pixel by pixel (the same surface points), so that
+// only the map differs: what shimmering is. A map snapped to whole texels scores 0 there.
 struct TemporalStep {
     std::string name;  // "1 px sideways", "0.1 deg turn", "walk"
     CameraSettings from, to;
@@ -61,6 +68,8 @@ struct TemporalFigures {
     std::string step;
     std::size_t comparedPoints = 0;
     double flipShare = 0.0;  // flips with steady truth / compared points
+    std::size_t mapComparedPoints = 0;  // receivers of the first frame (same camera, moved shadows)
+    double mapFlipShare = 0.0;          // their state flips / mapComparedPoints
 };
 std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& scene, const Settings& settings,
                                                int width, int height, const RayScene& rays);

@@ -196,7 +196,8 @@ void runRender(const RenderOptions& options) {
                 std::printf("  %s state flips with steady truth:", methodChoiceName(methods[i]).c_str());
                 for (const TemporalFigures& t :
                      temporalStability(*renderer, *scene, view, options.width, options.height, *rays))
-                    std::printf("  %s %.3f%% (%zu points)", t.step.c_str(), 100.0 * t.flipShare, t.comparedPoints);
+                    std::printf("  %s %.3f%% (%zu points; the map alone %.4f%% of %zu)", t.step.c_str(),
+                                100.0 * t.flipShare, t.comparedPoints, 100.0 * t.mapFlipShare, t.mapComparedPoints);
                 std::printf("\n");
             }
         }
