@@ -7,6 +7,7 @@
 #include "render_target.h"
 #include "accuracy.h"
 #include "bench_spec.h"
+#include "cascade_footprint.h"
 #include "renderer.h"
 #include "scenes/animation.h"
 #include "ground_plane.h"
@@ -53,6 +54,25 @@ struct RenderOptions {
 // Error against cost for one method: the frame time including the GPU's work (glFinish), the
 // texel footprint (thesis 8.2.1) over the lit-facing receivers, and with --truth the shadow
 // state against Embree rays (app/accuracy.h).
+// Cascades: each split's share of the pixels and of the frame's worst 1%, its footprint and
+// bisector figures and its warp (where a cascade's p99 comes from).
+void printSplits(const MeasureFrame& frame, const CascadeSetup& cascades, const AliasingStats& whole) {
+    const std::vector<SplitFootprint> splits = splitFootprints(frame, cascades, whole.p99);
+    std::size_t above = 0;
+    for (const SplitFootprint& s : splits) above += s.aboveFrameP99;
+    for (std::size_t i = 0; i < splits.size(); ++i) {
+        const SplitFootprint& s = splits[i];
+        const ShadowDiagnostics& d = cascades.splits[i].setup.diagnostics;
+        const double share = whole.measuredPixels ? 100.0 * double(s.footprint.measuredPixels) / double(whole.measuredPixels) : 0.0;
+        std::printf("  split %zu  %8.2f .. %8.2f m  pixels %5.1f%%  median %7.3f  p95 %7.3f  p99 %8.2f  bisector p99 %7.3f"
+                    "  of the frame's > p99 %5.1f%%",
+                    i + 1, s.zNear, s.zFar, share, s.footprint.median, s.footprint.p95, s.footprint.p99, s.bisector.p99,
+                    above ? 100.0 * double(s.aboveFrameP99) / double(above) : 0.0);
+        if (d.method == ShadowMethod::Lispsm) std::printf("  n %.4g (n_opt %.4g)", d.nUsed, d.nOptReal);
+        std::printf("\n");
+    }
+}
+
 AccuracyReport measureMethod(Renderer& renderer, const Scene& scene, const Settings& settings, const RenderTarget& target,
                    const RayScene* rays, bool header) {
     const Viewport viewport{target.framebuffer(), 0, 0, target.width(), target.height()};
@@ -77,6 +97,7 @@ AccuracyReport measureMethod(Renderer& renderer, const Scene& scene, const Setti
         std::printf("  %6.2f%% %12.2f%% %11.2f%% %7.3f", 100.0 * a.truth->eTotal, 100.0 * a.truth->falseShadow,
                     100.0 * a.truth->falseLight, a.truth->eEdge);
     std::printf("\n");
+    if (settings.csm.enabled) printSplits(frame, renderer.lastCascadeSetup(), a.footprint);
     return a;
 }
 
