@@ -462,7 +462,7 @@ void addViewerOptions(CLI::App& app) {
     app.add_option("--width", options->width, "window width")->capture_default_str();
     app.add_option("--height", options->height, "window height")->capture_default_str();
     app.add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
-    app.add_option("--method", options->overrides.method, "ssm, ssm-unfocused, psm or lispsm");
+    app.add_option("--method", options->overrides.method, std::string("one of ") + methodChoiceNames() + " (csm keeps csm.perSplit)");
     app.add_option("--set", options->overrides.sets, "a setting as key=value (repeatable)");
     addLoadLimitOption(app, options->limits);
     app.add_option("--ab", options->abView,
