@@ -106,6 +106,36 @@ std::size_t allocationLimit(const stbi_uc* data, int size, int width, int height
     return std::size_t(std::min<std::uint64_t>(limit, std::numeric_limits<std::size_t>::max()));
 }
 
+// stb copies each IDAT chunk into a buffer it allocates at the first chunk with data, so an empty
+// IDAT before that one is memcpy(nullptr, data, 0): undefined behaviour although nothing is copied
+// (UBSan's nonnull-attribute, a fuzz find; PNG allows empty IDATs). Such chunks carry nothing: a
+// copy of the file without them decodes the same. Empty when there is nothing to drop (not a PNG,
+// or no empty IDAT before IEND or before a chunk that runs past the end, which stb reports).
+std::vector<std::uint8_t> withoutEmptyIdats(const std::vector<std::uint8_t>& encoded) {
+    static const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    static const std::uint8_t emptyIdat[8] = {0, 0, 0, 0, 'I', 'D', 'A', 'T'};  // length 0, type
+    if (encoded.size() < 8 || !std::equal(signature, signature + 8, encoded.begin())) return {};
+    std::vector<std::size_t> empty;  // where the empty IDATs' 12 bytes (length, type, CRC) start
+    for (std::size_t at = 8; encoded.size() - at >= 12;) {
+        const auto chunk = encoded.begin() + std::ptrdiff_t(at);
+        const std::uint64_t length = std::uint64_t(chunk[0]) << 24 | std::uint64_t(chunk[1]) << 16 |
+                                     std::uint64_t(chunk[2]) << 8 | chunk[3];
+        if (std::equal(emptyIdat, emptyIdat + 8, chunk)) empty.push_back(at);
+        if (std::equal(chunk + 4, chunk + 8, "IEND") || length > encoded.size() - at - 12) break;
+        at += 12 + std::size_t(length);
+    }
+    if (empty.empty()) return {};
+    std::vector<std::uint8_t> kept;
+    kept.reserve(encoded.size() - 12 * empty.size());
+    std::size_t from = 0;
+    for (std::size_t at : empty) {
+        kept.insert(kept.end(), encoded.begin() + std::ptrdiff_t(from), encoded.begin() + std::ptrdiff_t(at));
+        from = at + 12;
+    }
+    kept.insert(kept.end(), encoded.begin() + std::ptrdiff_t(from), encoded.end());
+    return kept;
+}
+
 }  // namespace
 
 bool readSize(const std::vector<std::uint8_t>& encoded, int& width, int& height, std::string& reason) {
@@ -117,8 +147,10 @@ bool readSize(const std::vector<std::uint8_t>& encoded, int& width, int& height,
     return false;
 }
 
-bool decodeRgba8(const std::vector<std::uint8_t>& encoded, int& width, int& height,
-                 std::vector<std::uint8_t>& rgba8, std::string& reason) {
+bool decodeRgba8(const std::vector<std::uint8_t>& file, int& width, int& height, std::vector<std::uint8_t>& rgba8,
+                 std::string& reason) {
+    const std::vector<std::uint8_t> stripped = withoutEmptyIdats(file);
+    const std::vector<std::uint8_t>& encoded = stripped.empty() ? file : stripped;
     if (!readSize(encoded, width, height, reason)) return false;
     const int size = int(encoded.size());
     std::size_t bound = 0;

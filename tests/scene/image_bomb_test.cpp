@@ -149,6 +149,25 @@ TEST_F(ImageBombs, TheBombsMessageNamesTheImageAndTheBound) {
     EXPECT_NE(r.error.find(" encoded bytes needs at most "), std::string::npos) << r.error;
 }
 
+// PNG allows empty IDAT chunks; one before the first with data made stb memcpy to a null buffer
+// (UBSan in the sanitized twin; a fuzz find). It decodes as without the chunk.
+TEST_F(ImageBombs, AnEmptyIdatBeforeTheDataDecodesAsWithoutIt) {
+    Bytes png = kPng2x1;
+    Bytes emptyIdat;
+    append(emptyIdat, std::uint32_t(0));
+    emptyIdat.insert(emptyIdat.end(), {'I', 'D', 'A', 'T'});
+    append(emptyIdat, bigEndian(crc32(Bytes{'I', 'D', 'A', 'T'})));
+    const std::size_t afterIhdr = 8 + 12 + 13;
+    png.insert(png.begin() + std::ptrdiff_t(afterIhdr), emptyIdat.begin(), emptyIdat.end());
+    png.insert(png.begin() + std::ptrdiff_t(afterIhdr), emptyIdat.begin(), emptyIdat.end());
+    const Scene with = expectLoads(write("empty_idat.glb", texturedGlb({png}, {0})));
+    const Scene without = expectLoads(write("plain.glb", texturedGlb({kPng2x1}, {0})));
+    ASSERT_EQ(with.textures.size(), 1u);
+    ASSERT_EQ(without.textures.size(), 1u);
+    EXPECT_EQ(with.textures[0].rgba8, without.textures[0].rgba8);
+    EXPECT_EQ(with.textures[0].rgba8.size(), 8u);
+}
+
 // The bound must not refuse what stb legitimately needs: Adam7 rows make the inflated data longer
 // than the non-interlaced size stb starts its buffer at, so it doubles that buffer; 16-bit channels
 // take 8 bytes a pixel before conversion. The 2048^2 16-bit interlaced image is the edge: its

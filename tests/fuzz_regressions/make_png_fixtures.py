@@ -1,10 +1,15 @@
 #!/usr/bin/env python3
-"""Writes scene/png_bomb_16x16_inflates_40mb.glb: a synthetic stand-in for issue 12's fuzz find
-(a mutated shared-scene GLB, not kept), a one-triangle GLB whose base colour texture is a 16x16
-RGBA8 PNG (1,040 bytes of filtered rows declared) with a zlib stream of 40,000,000 zero bytes
-(38.9 KB at zlib level 9). stb_image's inflater doubles its buffer from the declared 1,040 bytes
-to 1,040 x 2^16 = 68.2 MB for it; the replay runs with ASan's max_allocation_size_mb=64, so that
-request aborts it where the decoder is unbounded. Usage: tests/fuzz_regressions/make_png_bomb.py
+"""Writes the synthetic PNG fixtures under scene/ (stand-ins for fuzz finds that were mutations of
+shared scenes, which are not kept). Each is a one-triangle GLB whose base colour texture is a PNG:
+
+png_bomb_16x16_inflates_40mb.glb: a 16x16 RGBA8 PNG (1,040 bytes of filtered rows declared) with
+  a zlib stream of 40,000,000 zero bytes (38.9 KB at zlib level 9). stb_image's inflater doubles
+  its buffer from the declared 1,040 bytes to 1,040 x 2^16 = 68.2 MB for it; the replay runs with
+  ASan's max_allocation_size_mb=64, so that request aborts it where the decoder is unbounded.
+png_empty_idat_first.glb: a valid 2x1 RGB PNG with an empty IDAT chunk before the one with the
+  data (PNG allows it); stb copied it with memcpy(nullptr, data, 0), which UBSan reports.
+
+Usage: tests/fuzz_regressions/make_png_fixtures.py
 """
 import json
 import pathlib
@@ -18,10 +23,19 @@ def chunk(kind: bytes, data: bytes) -> bytes:
     return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
 
-def png_bomb() -> bytes:
-    ihdr = struct.pack(">IIBBBBB", 16, 16, 8, 6, 0, 0, 0)  # 16x16, 8-bit RGBA, not interlaced
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(bytes(INFLATED), 9)) +
+def png(width: int, height: int, colour: int, idats: list) -> bytes:
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, colour, 0, 0, 0)  # 8-bit, not interlaced
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + b"".join(chunk(b"IDAT", d) for d in idats) +
             chunk(b"IEND", b""))
+
+
+def png_bomb() -> bytes:
+    return png(16, 16, 6, [zlib.compress(bytes(INFLATED), 9)])
+
+
+def png_empty_idat_first() -> bytes:
+    rows = bytes([0, 255, 0, 0, 0, 0, 255])  # filter 0, a red and a blue pixel
+    return png(2, 1, 2, [b"", zlib.compress(rows, 9)])
 
 
 def pad4(data: bytes, fill: bytes) -> bytes:
@@ -58,7 +72,9 @@ def glb(image: bytes) -> bytes:
 
 
 if __name__ == "__main__":
-    out = pathlib.Path(__file__).resolve().parent / "scene" / "png_bomb_16x16_inflates_40mb.glb"
-    data = glb(png_bomb())
-    out.write_bytes(data)
-    print(f"{out}: {len(data)} bytes")
+    folder = pathlib.Path(__file__).resolve().parent / "scene"
+    for name, image in (("png_bomb_16x16_inflates_40mb.glb", png_bomb()),
+                        ("png_empty_idat_first.glb", png_empty_idat_first())):
+        data = glb(image)
+        (folder / name).write_bytes(data)
+        print(f"{folder / name}: {len(data)} bytes")
