@@ -2,11 +2,12 @@
 // internal linkage, so nothing clashes with Debian's libstb.so that tinygltf and the renderer link),
 // with its allocator replaced by a bounded one. Why: a PNG's zlib stream may inflate far past the
 // size its header declares, and stb's inflater grows its output by doubling without a bound (a
-// fuzz find: a 6.5 KB GLB whose 16x16-ish PNG asked for malloc(486543419); a real bomb fills that
-// memory before stb, which keeps the first raw_len bytes and ignores the rest, even notices). The
-// shared library's allocator cannot be replaced, so the loader decodes with this copy only. The
-// limit is per allocation, set on the decoding thread (textures decode in parallel) from the
-// header before each decode: no second inflate pass, no new dependency.
+// fuzz find: a 6.5 KB GLB whose PNG asked for malloc(486543419)). stb then keeps the bytes the
+// header needs and ignores the rest, so such a file even loaded, after holding its whole inflated
+// stream (tests/scene/image_bomb_test.cpp: +313 MB for a 2 MB PNG). The shared library's allocator
+// cannot be replaced, so the loader decodes with this copy only. The limit is per allocation, set
+// on the decoding thread (textures decode in parallel) from the header before each decode: no
+// second inflate pass, no new dependency.
 #include "scenes/image_decode.h"
 
 #include <algorithm>
