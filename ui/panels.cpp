@@ -103,13 +103,12 @@ bool methodChoiceCombo(const char* label, MethodChoice& choice, const char* tool
         options.push_back({{ShadowMethod::Lispsm, true, kPerSplit[i]}, kPerSplitLabels[i]});
     std::string current = methodChoiceName(choice);  // a plain "csm" from a view file: csm.perSplit
     for (const auto& [c, text] : options)
-        if (c.cascaded == choice.cascaded && (c.cascaded ? c.perSplit == choice.perSplit : c.method == choice.method))
-            current = text;
+        if (c == choice) current = text;
     bool changed = false;
     if (ImGui::BeginCombo(label, current.c_str())) {
         for (const auto& [c, text] : options) {
             if (ImGui::Selectable(text.c_str(), c == choice)) {
-                changed = !(c == choice);
+                changed = c != choice;
                 choice = c;
             }
             if (ImGui::IsItemHovered())
