@@ -1,6 +1,7 @@
 #include "viewer_accuracy.h"
 
 #include "math/error_theory.h"
+#include "settings/method_choice.h"
 
 #include <imgui.h>
 
@@ -82,6 +83,12 @@ void uploadMismatch(ViewerAccuracy& a, const RgbaImage& image) {
     a.view.mismatchHeight = image.height;
 }
 
+// The histogram and the mismatch picture: of the frame the view shows.
+void showCurrent(ViewerAccuracy& a, ui::AccuracyView& view, const MeasureFrame& frame, const AccuracyReport& report) {
+    view.histogram = log2Histogram(frame.footprint, view.histogramLog2Low, view.histogramLog2High, 24);
+    if (report.truth) uploadMismatch(a, mismatchImage(report.verdicts, frame.width, frame.height));
+}
+
 }  // namespace
 
 void drawMismatchOverlay(const ViewerAccuracy& a, const Settings& settings, float x, float y, float width,
@@ -89,6 +96,7 @@ void drawMismatchOverlay(const ViewerAccuracy& a, const Settings& settings, floa
     const Settings& m = a.measuredSettings;
     // What the shadow state depends on (not overlays, compare layout or display settings).
     const bool sameView = settings.camera == m.camera && settings.light == m.light && settings.method == m.method &&
+                          settings.csm == m.csm &&
                           settings.shadowMapSize == m.shadowMapSize && settings.bias == m.bias &&
                           settings.filter == m.filter && settings.lispsm == m.lispsm && settings.psm == m.psm &&
                           settings.animation.time == m.animation.time;
@@ -120,9 +128,13 @@ void measureForPanel(ViewerAccuracy& a, Renderer& renderer, const Scene& scene, 
     ui::AccuracyView view;
     std::vector<ui::AccuracyCurve> measured;
     const ShadowLight light = truthLight(scene, settings, settings.animation.time);
+    // The three one-map methods with cascades off (each column is what its name says), then, when
+    // the view shows cascades, those as a fourth column: the histogram and the mismatch picture
+    // are of what the view shows.
+    const MethodChoice shown = methodChoiceOf(settings);
     for (ShadowMethod method : {ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm}) {
         Settings s = settings;
-        s.method = method;
+        applyMethodChoice(s, MethodChoice{method, false, {}});
         s.viewMode = ViewMode::Lit;
         const MeasureFrame frame = measureView(renderer, scene, s, w, h);
         const AccuracyReport report = analyseFrame(frame, rays, light);
@@ -137,17 +149,27 @@ void measureForPanel(ViewerAccuracy& a, Renderer& renderer, const Scene& scene, 
         if (method == ShadowMethod::Lispsm) {
             for (ui::AccuracyCurve& c : theoryCurves(frame, report.visibleDepth)) measured.push_back(c);
         }
-        if (method == settings.method || (settings.method == ShadowMethod::SsmUnfocused && method == ShadowMethod::SsmFocused)) {
-            view.histogram = log2Histogram(frame.footprint, view.histogramLog2Low, view.histogramLog2High, 24);
-            if (report.truth) uploadMismatch(a, mismatchImage(report.verdicts, frame.width, frame.height));
-        }
+        const bool current = !shown.cascaded && (method == settings.method || (settings.method == ShadowMethod::SsmUnfocused &&
+                                                                              method == ShadowMethod::SsmFocused));
+        if (current) showCurrent(a, view, frame, report);
+    }
+    if (shown.cascaded) {
+        Settings s = settings;
+        s.viewMode = ViewMode::Lit;
+        const MeasureFrame frame = measureView(renderer, scene, s, w, h);
+        const AccuracyReport report = analyseFrame(frame, rays, light);
+        ui::AccuracyFigures figures = figuresOf(settings.method, report);
+        figures.name = methodChoiceName(shown);
+        view.methods.push_back(figures);
+        showCurrent(a, view, frame, report);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     view.curves = std::move(measured);
     view.measured = true;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char status[256];
-    std::snprintf(status, sizeof status, "SSM, PSM, LiSPSM at %dx%d in %.2f s%s%s", w, h, seconds,
+    const std::string cascades = shown.cascaded ? ", " + methodChoiceName(shown) : "";
+    std::snprintf(status, sizeof status, "SSM, PSM, LiSPSM%s at %dx%d in %.2f s%s%s", cascades.c_str(), w, h, seconds,
                   rays ? ", ground truth on" : "", error.empty() ? "" : (" (no ground truth: " + error + ")").c_str());
     view.status = status;
     if (!(rays && a.mismatch)) a.mismatch = gl::Texture();

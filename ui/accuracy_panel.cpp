@@ -78,7 +78,7 @@ void drawDepthPlot(const std::vector<AccuracyCurve>& curves) {
 void drawFigures(const std::vector<AccuracyFigures>& methods) {
     if (!ImGui::BeginTable("accuracy figures", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
     ImGui::TableSetupColumn("");
-    for (const AccuracyFigures& m : methods) ImGui::TableSetupColumn(methodName(m.method));
+    for (const AccuracyFigures& m : methods) ImGui::TableSetupColumn(m.name.empty() ? methodName(m.method) : m.name.c_str());
     ImGui::TableHeadersRow();
     auto row = [&](const char* name, const char* tooltip, auto value, const char* format) {
         ImGui::TableNextRow();

@@ -23,6 +23,7 @@ struct AccuracyCurve {
 
 struct AccuracyFigures {
     ShadowMethod method = ShadowMethod::SsmFocused;
+    std::string name;  // the column's heading: the method's name, or a cascade choice's ("csm-lispsm")
     double median = 0.0, p95 = 0.0, p99 = 0.0, bisectorP99 = 0.0, undersampled = 0.0;
     double distanceToLimit = 0.0;
     bool hasTruth = false;
