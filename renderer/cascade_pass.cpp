@@ -53,6 +53,7 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
         params.visibleNear = visible.nearest;
         params.visibleFar = visible.farthest;
         params.base.receiverPoints = visible.receivers;
+        params.base.fineReceiverPoints = visible.fineReceivers;  // each split's own (math/cascades.h)
     }
     frame.cascades = computeCascadeSetup(frame.shadowView, shadowLight(frame.light), frame.scene.bounds, params);
     lastCascades_ = frame.cascades;

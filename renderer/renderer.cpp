@@ -280,7 +280,9 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.height = std::max(16, frame.viewport.height / 4);
     view.sceneLoad = sceneLoads_;
     view.sceneVersion = sceneVersion_;
-    view.fineReceivers = frame.light.type == LightType::Spot;
+    // Spot lights (a cone lighting a few grid points) and cascades (a split holding a few of them)
+    // also sample the fine grid (math/lispsm_search.h, math/cascades.h).
+    view.fineReceivers = frame.light.type == LightType::Spot || frame.settings.csm.enabled;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
             setShadowClip(p, viewProjection, frame.shadowView.eye);

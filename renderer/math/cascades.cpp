@@ -65,6 +65,22 @@ std::vector<SurfacePoint> receiversBetween(const std::vector<SurfacePoint>& all,
     return out;
 }
 
+// The receivers a split's warp search measures: all of the fine grid's in its depth range where
+// the pre-pass sampled it (the splits partition the grid, so the four searches together see at
+// most its ShadowParams::kFineReceiverGridX x kFineReceiverGridY points), else the coarse grid's.
+// The coarse grid has 48 points for the whole view, a split a few of them in a few image rows,
+// and the search minimizes the largest footprint over them, which a grazed wall decides by where
+// it happens to be sampled. Measured (street, Camera_DownStreet_SunBehind, csm-lispsm, lambda 1,
+// 1024^2 splits, 1280x720): split 1 (0.1-14 m) had 19 coarse samples, 16 on the road at 3-6 m, its
+// maximum a wall lit at 7 deg at 9 m that a strong warp helps: n 1.28, split p99 35.3. With the
+// fine grid (346 samples) the maximum is the same wall at the split's far end (14 m): n 42, p99
+// 12.4 (a fixed n 20: 12.3). The fine grid thinned to 48 or 192 points: n 2.84, p99 21.6.
+std::vector<SurfacePoint> splitReceivers(const ShadowParams& base, const glm::dvec3& eye, const glm::dvec3& forward,
+                                         double zLow, double zHigh) {
+    const bool fine = !base.fineReceiverPoints.empty();
+    return receiversBetween(fine ? base.fineReceiverPoints : base.receiverPoints, eye, forward, zLow, zHigh);
+}
+
 std::vector<glm::dvec3> polygonVertices(const PolygonList& faces) {
     std::vector<glm::dvec3> out;
     for (const auto& f : faces) out.insert(out.end(), f.begin(), f.end());
@@ -244,8 +260,9 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
         split.zFar = z[i + 1];
         const ViewFrustum sub = splitFrustum(view, split.zNear, split.zFar);
         ShadowParams p = params.base;
-        p.receiverPoints = receiversBetween(params.base.receiverPoints, view.eye, forward, i == 0 ? 0.0 : z[i],
-                                            i + 1 == params.splits ? kInfinity : z[i + 1]);
+        const double zLow = i == 0 ? 0.0 : z[i], zHigh = i + 1 == params.splits ? kInfinity : z[i + 1];
+        p.receiverPoints = splitReceivers(params.base, view.eye, forward, zLow, zHigh);
+        p.fineReceiverPoints.clear();  // already in receiverPoints (a spot cone's fallback: lispsm_search.h)
         // LiSPSM's n from the split's own depths (thesis 9.2.5 per split): the first split's
         // near plane is the view's, its receivers start at the nearest visible depth.
         p.lispsm.virtualFar = 0.0;

@@ -36,9 +36,11 @@ struct CascadeParams {
     std::vector<double> manualSplits;
     SplitParameterization perSplit = SplitParameterization::Ssm;
     int mapResolution = 1024;  // texels per side of one layer: the stable snap needs it
-    // LiSPSM options, PSM guard, polygon collection (method is ignored). base.receiverPoints: the
-    // measured visible surfaces (the depth pre-pass's grid); each split's warp search gets only
-    // those in its own depth range, so it measures its own receivers.
+    // LiSPSM options, PSM guard, polygon collection (method is ignored). base.receiverPoints /
+    // base.fineReceiverPoints: the measured visible surfaces (the depth pre-pass's coarse and fine
+    // grids); each split's warp search gets only those in its own depth range, so it measures its
+    // own receivers, all of the fine grid's where there is one (a split holds a few coarse points:
+    // cascades.cpp, splitReceivers).
     ShadowParams base;
     // The nearest and farthest visible eye depth the depth pre-pass measured (<= 0: unknown).
     // When known, the splits are spread over this range instead of [zNear, zFar] (a far plane
