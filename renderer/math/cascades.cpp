@@ -1,6 +1,7 @@
 // Cascaded shadow maps: split positions, per-split setups, stable SSM (see cascades.h).
 #include "math/cascades.h"
 
+#include "math/lispsm_search.h"
 #include "math/shadow_internal.h"
 
 #include <algorithm>
@@ -65,20 +66,34 @@ std::vector<SurfacePoint> receiversBetween(const std::vector<SurfacePoint>& all,
     return out;
 }
 
-// The receivers a split's warp search measures: all of the fine grid's in its depth range where
-// the pre-pass sampled it (the splits partition the grid, so the four searches together see at
-// most its ShadowParams::kFineReceiverGridX x kFineReceiverGridY points), else the coarse grid's.
-// The coarse grid has 48 points for the whole view, a split a few of them in a few image rows,
-// and the search minimizes the largest footprint over them, which a grazed wall decides by where
-// it happens to be sampled. Measured (street, Camera_DownStreet_SunBehind, csm-lispsm, lambda 1,
-// 1024^2 splits, 1280x720): split 1 (0.1-14 m) had 19 coarse samples, 16 on the road at 3-6 m, its
-// maximum a wall lit at 7 deg at 9 m that a strong warp helps: n 1.28, split p99 35.3. With the
-// fine grid (346 samples) the maximum is the same wall at the split's far end (14 m): n 42, p99
-// 12.4 (a fixed n 20: 12.3). The fine grid thinned to 48 or 192 points: n 2.84, p99 21.6.
-std::vector<SurfacePoint> splitReceivers(const ShadowParams& base, const glm::dvec3& eye, const glm::dvec3& forward,
-                                         double zLow, double zHigh) {
-    const bool fine = !base.fineReceiverPoints.empty();
-    return receiversBetween(fine ? base.fineReceiverPoints : base.receiverPoints, eye, forward, zLow, zHigh);
+// A LiSPSM split's warp is searched over the coarse grid's receivers in its depth range (48 points
+// for the whole view; a split holds a few of them in a few image rows), as one map's is. Where
+// the pre-pass also sampled the fine grid, the split's fine receivers check that choice: the warp
+// searched over them replaces it when the coarse one is more than kCoarseWarpGuard times worse
+// over them. Measured (csm-lispsm, 1024^2 splits, 1280x720, slope + PCF 2x2): street
+// Camera_DownStreet_SunBehind, lambda 1, split 1 (0.1-14 m): 19 coarse samples, 16 on the road
+// at 3-6 m, their maximum a wall lit at 7 deg at 9 m that a strong warp helps: n 1.28, split p99
+// 35.3; over the 346 fine samples that n is 3.4x their best (the same wall at 14 m decides), whose
+// n 42 gives p99 12.4 (a fixed n 20: 12.3). Always taking the fine grid's warp instead lost on the
+// forest (Camera_AlongGround_SunSide, lambda 0.9: frame p99 50.4 -> 61.5; split 3 had 3 coarse and
+// 50 fine samples, whose maximum, a trunk lit at 6-11 deg, moved n 14 -> 35 at a 1.21x ratio):
+// the maximum over more samples is one grazed receiver, so the fine choice is not better where
+// the two are close. Every other split of forest SunSide, street SunBehind and SunAhead at lambda
+// 0.5 / 0.9 / 1: ratio <= 1.21, so those views are unchanged. Cost: a second LiSPSM setup per split.
+constexpr double kCoarseWarpGuard = 1.5;
+
+ShadowSetup guardedLispsmSetup(const ViewFrustum& view, const ViewFrustum& sub, const ShadowLight& light,
+                               const Aabb& sceneBounds, ShadowParams p, const std::vector<SurfacePoint>& fine) {
+    ShadowSetup coarse = computeShadowSetup(sub, light, sceneBounds, p);
+    const std::vector<detail::ReceiverSample> dense = detail::measuredReceiverSamples(light, fine);
+    if (!coarse.valid || p.lispsm.overrideN || dense.empty()) return coarse;
+    p.receiverPoints = fine;
+    p.fineReceiverPoints.clear();  // (a spot cone's fallback would join them again)
+    ShadowSetup fromFine = computeShadowSetup(sub, light, sceneBounds, p);
+    if (!fromFine.valid) return coarse;
+    const double coarseWorst = detail::worstFootprintOf(coarse.worldToShadowClip, view, dense);
+    const double fineWorst = detail::worstFootprintOf(fromFine.worldToShadowClip, view, dense);
+    return coarseWorst > kCoarseWarpGuard * fineWorst ? fromFine : coarse;
 }
 
 std::vector<glm::dvec3> polygonVertices(const PolygonList& faces) {
@@ -261,8 +276,9 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
         const ViewFrustum sub = splitFrustum(view, split.zNear, split.zFar);
         ShadowParams p = params.base;
         const double zLow = i == 0 ? 0.0 : z[i], zHigh = i + 1 == params.splits ? kInfinity : z[i + 1];
-        p.receiverPoints = splitReceivers(params.base, view.eye, forward, zLow, zHigh);
-        p.fineReceiverPoints.clear();  // already in receiverPoints (a spot cone's fallback: lispsm_search.h)
+        p.receiverPoints = receiversBetween(params.base.receiverPoints, view.eye, forward, zLow, zHigh);
+        // A spot cone's fallback to the fine grid (detail::receiversInLight) stays in the split too.
+        p.fineReceiverPoints = receiversBetween(params.base.fineReceiverPoints, view.eye, forward, zLow, zHigh);
         // LiSPSM's n from the split's own depths (thesis 9.2.5 per split): the first split's
         // near plane is the view's, its receivers start at the nearest visible depth.
         p.lispsm.virtualFar = 0.0;
@@ -277,7 +293,7 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
             break;
         case SplitParameterization::Lispsm:
             p.method = ShadowMethod::Lispsm;
-            split.setup = computeShadowSetup(sub, light, sceneBounds, p);
+            split.setup = guardedLispsmSetup(view, sub, light, sceneBounds, p, p.fineReceiverPoints);
             break;
         }
         if (split.setup.valid) {

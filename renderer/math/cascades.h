@@ -39,8 +39,8 @@ struct CascadeParams {
     // LiSPSM options, PSM guard, polygon collection (method is ignored). base.receiverPoints /
     // base.fineReceiverPoints: the measured visible surfaces (the depth pre-pass's coarse and fine
     // grids); each split's warp search gets only those in its own depth range, so it measures its
-    // own receivers, all of the fine grid's where there is one (a split holds a few coarse points:
-    // cascades.cpp, splitReceivers).
+    // own receivers; a LiSPSM split's fine ones check the warp chosen over its few coarse ones
+    // (cascades.cpp, guardedLispsmSetup).
     ShadowParams base;
     // The nearest and farthest visible eye depth the depth pre-pass measured (<= 0: unknown).
     // When known, the splits are spread over this range instead of [zNear, zFar] (a far plane

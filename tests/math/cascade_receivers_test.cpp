@@ -1,4 +1,4 @@
-// Which receivers a LiSPSM split's warp search measures (math/cascades.cpp, splitReceivers): a
+// The fine receiver grid's check on a LiSPSM split's warp (math/cascades.cpp, guardedLispsmSetup): a
 // street canyon, ray cast at the depth pre-pass's coarse (8 x 6) and fine (32 x 24) grids, with
 // the sun low behind the viewer grazing one wall, as on the generated street's
 // Camera_DownStreet_SunBehind view, where split 1's search over its few coarse points chose a
@@ -21,7 +21,7 @@ constexpr double kHalfWidth = 12.0, kWallHeight = 20.0, kLength = 1000.0;
 ViewFrustum streetView() {
     ViewFrustum v;
     v.eye = {0.0, 1.7, 0.0};
-    v.forward = glm::normalize(glm::dvec3(0.0, -0.05, -1.0));
+    v.forward = glm::normalize(glm::dvec3(0.0, -0.15, -1.0));
     v.fovY = 60.0 * kPi / 180.0;
     v.aspect = 16.0 / 9.0;
     v.zNear = 0.1;
@@ -29,11 +29,11 @@ ViewFrustum streetView() {
     return v;
 }
 
-// The street's directions: towards the sun 25 deg up, behind the viewer and a little to the
-// left, so the right wall (normal -x) is lit at 7 deg, the left one faces away.
-ShadowLight lowSunBehind() {
+// The street's directions: towards the sun 25 deg up (towardsY 0.423), behind the viewer and a
+// little to the left, so the right wall (normal -x) is lit at 7 deg, the left one faces away.
+ShadowLight sunBehind(double towardsY = 0.423) {
     ShadowLight l;
-    l.direction = -glm::normalize(glm::dvec3(-0.126, 0.423, 0.897));
+    l.direction = -glm::normalize(glm::dvec3(-0.126, towardsY, 0.897));
     return l;
 }
 
@@ -108,41 +108,70 @@ double splitOneWorstOverFine(const CascadeSetup& cs, const ViewFrustum& v, const
     return detail::worstFootprintOf(cs.splits[0].setup.worldToShadowClip, v, samples);
 }
 
-TEST(CascadeReceivers, ALispsmSplitSearchesTheFineGridOfItsRange) {
-    const ViewFrustum view = streetView();
-    const ShadowLight light = lowSunBehind();
-    const std::vector<SurfacePoint> coarse = castGrid(view, ShadowParams::kReceiverGridX, ShadowParams::kReceiverGridY);
-    const std::vector<SurfacePoint> fine =
-        castGrid(view, ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY);
-    const CascadeSetup withFine = computeCascadeSetup(view, light, streetBounds(), streetCascade(coarse, fine, view));
-    const CascadeSetup coarseOnly = computeCascadeSetup(view, light, streetBounds(), streetCascade(coarse, {}, view));
-    ASSERT_EQ(withFine.splits.size(), 4u);
-    ASSERT_TRUE(withFine.splits[0].setup.valid && coarseOnly.splits[0].setup.valid);
-    // Every fine receiver of the range is a sample (none is grazed below N.L 0.1 here).
-    int inSplit = 0;
-    for (const SurfacePoint& r : fine)
-        inSplit += eyeDepth(view, r.point) < withFine.splits[0].zFar && glm::dot(r.normal, -light.direction) > 0.1;
-    EXPECT_EQ(withFine.splits[0].setup.diagnostics.warpSamples, inSplit);
-
-    // The best fixed n for split 1, over the same dense receivers.
-    double bestFixed = std::numeric_limits<double>::infinity(), bestN = 0.0;
+// The best fixed n for split 1 over the fine receivers (the reference the search must reach).
+double bestFixedOverFine(const CascadeParams& params, const ViewFrustum& view, const ShadowLight& light,
+                         const std::vector<SurfacePoint>& fine) {
+    double best = std::numeric_limits<double>::infinity();
     for (double n : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 1e3, 1e5}) {
-        CascadeParams p = streetCascade(coarse, fine, view);
+        CascadeParams p = params;
         p.base.lispsm.overrideN = true;
         p.base.lispsm.n = n;
-        const double m = splitOneWorstOverFine(computeCascadeSetup(view, light, streetBounds(), p), view, light, fine);
-        if (m < bestFixed) {
-            bestFixed = m;
-            bestN = n;
-        }
+        best = std::min(best, splitOneWorstOverFine(computeCascadeSetup(view, light, streetBounds(), p), view, light, fine));
     }
-    const double searched = splitOneWorstOverFine(withFine, view, light, fine);
+    return best;
+}
+
+TEST(CascadeReceivers, CoarseReceiversInPartOfTheSplitGiveWayToTheFineGrid) {
+    const ViewFrustum view = streetView();
+    const ShadowLight light = sunBehind(0.7);  // 37 deg up
+    const std::vector<SurfacePoint> fine =
+        castGrid(view, ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY);
+    // A few coarse points in one band of split 1's depths (as on the street, where its 19 coarse
+    // samples were road at 3-6 m and one wall point of its 0.1-14 m).
+    std::vector<SurfacePoint> coarse;
+    for (const SurfacePoint& r : fine)
+        if (eyeDepth(view, r.point) >= 7.0 && eyeDepth(view, r.point) < 9.0) coarse.push_back(r);
+    const CascadeParams params = streetCascade(coarse, fine, view);
+    const CascadeSetup guarded = computeCascadeSetup(view, light, streetBounds(), params);
+    const CascadeSetup coarseOnly = computeCascadeSetup(view, light, streetBounds(), streetCascade(coarse, {}, view));
+    ASSERT_EQ(guarded.splits.size(), 4u);
+    ASSERT_TRUE(guarded.splits[0].setup.valid && coarseOnly.splits[0].setup.valid);
+    ASSERT_GT(guarded.splits[0].zFar, 7.0);
+    const double searched = splitOneWorstOverFine(guarded, view, light, fine);
     const double fromCoarse = splitOneWorstOverFine(coarseOnly, view, light, fine);
-    // Measured: split 1 = 0.1-9.6 m; searched over the fine grid n 2.27 -> 8.21 (the best fixed n,
-    // 2: 8.21); over the coarse grid's points in the split (what the split searched before) n 20.1
-    // -> 9.31. On the street scene the coarse choice was 2.9x worse in the split's p99 (cascades.cpp).
-    EXPECT_LE(searched, 1.05 * bestFixed) << "n " << withFine.splits[0].setup.diagnostics.nUsed << ", best fixed n " << bestN;
-    EXPECT_GT(fromCoarse, 1.1 * searched) << "coarse n " << coarseOnly.splits[0].setup.diagnostics.nUsed;
+    const double bestFixed = bestFixedOverFine(params, view, light, fine);
+    // Measured: coarse n 14.0, 1.94x the best fixed n over the fine receivers.
+    EXPECT_GT(fromCoarse, 1.5 * bestFixed) << "the coarse choice fails here: n "
+                                           << coarseOnly.splits[0].setup.diagnostics.nUsed;
+    EXPECT_LE(searched, 1.05 * bestFixed) << "n " << guarded.splits[0].setup.diagnostics.nUsed;
+    // The fine grid's search decided: every fine receiver of the split is a sample.
+    int inSplit = 0;
+    for (const SurfacePoint& r : fine)
+        inSplit += eyeDepth(view, r.point) < guarded.splits[0].zFar && glm::dot(r.normal, -light.direction) > 0.1;
+    EXPECT_EQ(guarded.splits[0].setup.diagnostics.warpSamples, inSplit);
+}
+
+TEST(CascadeReceivers, AWarpTheFineGridRoughlyAgreesWithIsKept) {
+    // A coarser grid (6 x 4) for the coarse receivers: the fine grid's own search chooses another
+    // n for split 1 (measured 0.557 against 0.969), but the coarse choice is within the guard over
+    // the fine receivers (1.016x), so every split keeps the coarse search's warp (as the forest's
+    // and the street's other views: unchanged).
+    const ViewFrustum view = streetView();
+    const ShadowLight light = sunBehind(0.55);
+    const std::vector<SurfacePoint> coarse = castGrid(view, 6, 4);
+    const std::vector<SurfacePoint> fine =
+        castGrid(view, ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY);
+    const CascadeSetup guarded = computeCascadeSetup(view, light, streetBounds(), streetCascade(coarse, fine, view));
+    const CascadeSetup coarseOnly = computeCascadeSetup(view, light, streetBounds(), streetCascade(coarse, {}, view));
+    const CascadeSetup fineOnly = computeCascadeSetup(view, light, streetBounds(), streetCascade(fine, {}, view));
+    ASSERT_EQ(guarded.splits.size(), coarseOnly.splits.size());
+    const double coarseN = coarseOnly.splits[0].setup.diagnostics.nUsed, fineN = fineOnly.splits[0].setup.diagnostics.nUsed;
+    EXPECT_GT(std::abs(std::log(coarseN / fineN)), 0.01) << "the control: the fine grid alone would choose another n";
+    EXPECT_LT(splitOneWorstOverFine(coarseOnly, view, light, fine), 1.5 * splitOneWorstOverFine(fineOnly, view, light, fine));
+    for (std::size_t i = 0; i < guarded.splits.size(); ++i) {
+        EXPECT_EQ(guarded.splits[i].setup.diagnostics.nUsed, coarseOnly.splits[i].setup.diagnostics.nUsed) << i;
+        EXPECT_EQ(guarded.splits[i].setup.worldToShadowClip, coarseOnly.splits[i].setup.worldToShadowClip) << i;
+    }
 }
 
 }  // namespace
