@@ -123,7 +123,7 @@ double bestFixedOverFine(const CascadeParams& params, const ViewFrustum& view, c
 
 TEST(CascadeReceivers, CoarseReceiversInPartOfTheSplitGiveWayToTheFineGrid) {
     const ViewFrustum view = streetView();
-    const ShadowLight light = sunBehind(0.7);  // 37 deg up
+    const ShadowLight light = sunBehind(0.7);  // 38 deg up
     const std::vector<SurfacePoint> fine =
         castGrid(view, ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY);
     // A few coarse points in one band of split 1's depths (as on the street, where its 19 coarse
@@ -157,7 +157,7 @@ TEST(CascadeReceivers, AWarpTheFineGridRoughlyAgreesWithIsKept) {
     // the fine receivers (1.016x), so every split keeps the coarse search's warp (as the forest's
     // and the street's other views: unchanged).
     const ViewFrustum view = streetView();
-    const ShadowLight light = sunBehind(0.55);
+    const ShadowLight light = sunBehind(0.55);  // 31 deg up
     const std::vector<SurfacePoint> coarse = castGrid(view, 6, 4);
     const std::vector<SurfacePoint> fine =
         castGrid(view, ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY);
