@@ -69,6 +69,11 @@ void printSplits(const MeasureFrame& frame, const CascadeSetup& cascades, const 
                     i + 1, s.zNear, s.zFar, share, s.footprint.median, s.footprint.p95, s.footprint.p99, s.bisector.p99,
                     above ? 100.0 * double(s.aboveFrameP99) / double(above) : 0.0);
         if (d.method == ShadowMethod::Lispsm) std::printf("  n %.4g (n_opt %.4g)", d.nUsed, d.nOptReal);
+        // Which samples chose the warp: the coarse grid's unless the fine grid's check overruled it.
+        const CascadeSplit& split = cascades.splits[i];
+        if (split.coarseWarpLoss > 0.0)
+            std::printf("  warp from the %s grid (coarse choice %.2fx the fine one's worst)",
+                        split.warpFromFineGrid ? "fine" : "coarse", split.coarseWarpLoss);
         std::printf("\n");
     }
 }

@@ -82,18 +82,21 @@ std::vector<SurfacePoint> receiversBetween(const std::vector<SurfacePoint>& all,
 // 0.5 / 0.9 / 1: ratio <= 1.21, so those views are unchanged. Cost: a second LiSPSM setup per split.
 constexpr double kCoarseWarpGuard = 1.5;
 
-ShadowSetup guardedLispsmSetup(const ViewFrustum& view, const ViewFrustum& sub, const ShadowLight& light,
-                               const Aabb& sceneBounds, ShadowParams p, const std::vector<SurfacePoint>& fine) {
-    ShadowSetup coarse = computeShadowSetup(sub, light, sceneBounds, p);
+void guardedLispsmSetup(const ViewFrustum& view, const ViewFrustum& sub, const ShadowLight& light,
+                        const Aabb& sceneBounds, ShadowParams p, const std::vector<SurfacePoint>& fine,
+                        CascadeSplit& split) {
+    split.setup = computeShadowSetup(sub, light, sceneBounds, p);
     const std::vector<detail::ReceiverSample> dense = detail::measuredReceiverSamples(light, fine);
-    if (!coarse.valid || p.lispsm.overrideN || dense.empty()) return coarse;
+    if (!split.setup.valid || p.lispsm.overrideN || dense.empty()) return;
     p.receiverPoints = fine;
     p.fineReceiverPoints.clear();  // (a spot cone's fallback would join them again)
     ShadowSetup fromFine = computeShadowSetup(sub, light, sceneBounds, p);
-    if (!fromFine.valid) return coarse;
-    const double coarseWorst = detail::worstFootprintOf(coarse.worldToShadowClip, view, dense);
+    if (!fromFine.valid) return;
+    const double coarseWorst = detail::worstFootprintOf(split.setup.worldToShadowClip, view, dense);
     const double fineWorst = detail::worstFootprintOf(fromFine.worldToShadowClip, view, dense);
-    return coarseWorst > kCoarseWarpGuard * fineWorst ? fromFine : coarse;
+    split.coarseWarpLoss = fineWorst > 0.0 ? coarseWorst / fineWorst : 0.0;
+    split.warpFromFineGrid = coarseWorst > kCoarseWarpGuard * fineWorst;
+    if (split.warpFromFineGrid) split.setup = std::move(fromFine);
 }
 
 std::vector<glm::dvec3> polygonVertices(const PolygonList& faces) {
@@ -293,7 +296,7 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
             break;
         case SplitParameterization::Lispsm:
             p.method = ShadowMethod::Lispsm;
-            split.setup = guardedLispsmSetup(view, sub, light, sceneBounds, p, p.fineReceiverPoints);
+            guardedLispsmSetup(view, sub, light, sceneBounds, p, p.fineReceiverPoints, split);
             break;
         }
         if (split.setup.valid) {

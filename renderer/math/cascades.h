@@ -96,6 +96,11 @@ struct CascadeSplit {
     // World size of one texel at the split's centre (the map's x direction): the per-split scale
     // of the bias and of the normal offset.
     double texelWorldSize = 0.0;
+    // LiSPSM splits with fine receivers: how much worse the coarse samples' warp is than the fine
+    // grid's own over the fine receivers (worst footprint ratio; 0 where not checked), and whether
+    // it was over the guard so the fine grid's warp is used.
+    double coarseWarpLoss = 0.0;
+    bool warpFromFineGrid = false;
 };
 
 struct CascadeSetup {

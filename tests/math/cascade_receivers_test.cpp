@@ -149,6 +149,11 @@ TEST(CascadeReceivers, CoarseReceiversInPartOfTheSplitGiveWayToTheFineGrid) {
     for (const SurfacePoint& r : fine)
         inSplit += eyeDepth(view, r.point) < guarded.splits[0].zFar && glm::dot(r.normal, -light.direction) > 0.1;
     EXPECT_EQ(guarded.splits[0].setup.diagnostics.warpSamples, inSplit);
+    // And the split says so.
+    EXPECT_TRUE(guarded.splits[0].warpFromFineGrid);
+    EXPECT_GT(guarded.splits[0].coarseWarpLoss, 1.5);
+    EXPECT_FALSE(coarseOnly.splits[0].warpFromFineGrid);
+    EXPECT_EQ(coarseOnly.splits[0].coarseWarpLoss, 0.0);  // no fine grid: not checked
 }
 
 TEST(CascadeReceivers, AWarpTheFineGridRoughlyAgreesWithIsKept) {
@@ -171,7 +176,12 @@ TEST(CascadeReceivers, AWarpTheFineGridRoughlyAgreesWithIsKept) {
     for (std::size_t i = 0; i < guarded.splits.size(); ++i) {
         EXPECT_EQ(guarded.splits[i].setup.diagnostics.nUsed, coarseOnly.splits[i].setup.diagnostics.nUsed) << i;
         EXPECT_EQ(guarded.splits[i].setup.worldToShadowClip, coarseOnly.splits[i].setup.worldToShadowClip) << i;
+        EXPECT_FALSE(guarded.splits[i].warpFromFineGrid) << i;
+        if (guarded.splits[i].coarseWarpLoss > 0.0) {
+            EXPECT_LE(guarded.splits[i].coarseWarpLoss, 1.5) << i;
+        }
     }
+    EXPECT_GT(guarded.splits[0].coarseWarpLoss, 1.0) << "split 1 was checked and its coarse warp found close";
 }
 
 }  // namespace
