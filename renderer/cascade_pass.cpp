@@ -3,10 +3,10 @@
 // of the lookup (shaders/cascade.glsl, compiled in by #define CASCADES).
 #include "renderer.h"
 #include "renderer_frame.h"
+#include "view_pool.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -86,24 +86,21 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
 }
 
 std::size_t Renderer::selectCascadeMaps(const std::vector<ShadowMapKey>& layerKeys, int views) {
-    // As selectShadowMap: one array per view of a split compare (each pane's layers survive the
-    // other panes' frames), the one holding most of this frame's layers, else the least recent.
-    const std::size_t pool = std::size_t(std::clamp(views, 1, 3));
+    // One array per view of a split compare (view_pool.h): the one holding most of this frame's
+    // layers, else the least recently used.
+    const std::size_t pool = viewPoolSize(views);
     if (cascadePool_.size() != pool) {
         cascadePool_.resize(pool);
         cascadeLastUse_.resize(pool, 0);
     }
-    std::size_t pick = 0;
+    std::size_t held = pool;
     int best = 0;
     for (std::size_t p = 0; p < pool; ++p) {
-        int held = 0;
-        for (std::size_t i = 0; i < layerKeys.size(); ++i) held += cascadePool_[p].holds(int(i), layerKeys[i]) ? 1 : 0;
-        if (held > best) pick = p, best = held;
+        int layers = 0;
+        for (std::size_t i = 0; i < layerKeys.size(); ++i) layers += cascadePool_[p].holds(int(i), layerKeys[i]) ? 1 : 0;
+        if (layers > best) held = p, best = layers;
     }
-    if (best == 0)
-        pick = std::size_t(std::min_element(cascadeLastUse_.begin(), cascadeLastUse_.end()) - cascadeLastUse_.begin());
-    cascadeLastUse_[pick] = ++mapUseClock_;
-    return pick;
+    return takePoolSlot(cascadeLastUse_, held, mapUseClock_);
 }
 
 void Renderer::cascadeShadowPass(const Frame& frame, FrameStats& stats) {

@@ -1,6 +1,7 @@
 #include "renderer.h"
 #include "renderer_frame.h"
 #include "gl/sanitizer_support.h"
+#include "view_pool.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -139,21 +140,14 @@ void Renderer::cullCasters(Frame& frame, FrameStats& stats) const {
 }
 
 std::size_t Renderer::selectShadowMap(const ShadowMapKey& key, int views) {
-    // One map per view of a split compare, so each view's map survives the other views' frames;
-    // a single view keeps one (no second 2048^2 texture for a moving camera).
-    const std::size_t pool = std::size_t(std::clamp(views, 1, 3));
+    const std::size_t pool = viewPoolSize(views);  // view_pool.h
     if (shadowMaps_.size() != pool) {
         shadowMaps_.resize(pool);
         mapLastUse_.resize(pool, 0);
     }
-    std::size_t pick = 0;
-    bool holding = false;
-    for (std::size_t i = 0; i < pool && !holding; ++i)
-        if (shadowMaps_[i].holds(key)) pick = i, holding = true;
-    if (!holding)
-        pick = std::size_t(std::min_element(mapLastUse_.begin(), mapLastUse_.end()) - mapLastUse_.begin());
-    mapLastUse_[pick] = ++mapUseClock_;
-    return pick;
+    std::size_t held = 0;
+    while (held < pool && !shadowMaps_[held].holds(key)) ++held;
+    return takePoolSlot(mapLastUse_, held, mapUseClock_);
 }
 
 ShadowMapKey Renderer::shadowMapKey(const Frame& frame) const {
@@ -270,8 +264,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
 VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
     DepthView view;
     view.view = frame.shadowView;  // the pre-pass sees what the camera the shadows are for sees
-    view.viewProjection = frame.shadowView.projectionMatrix() * frame.shadowView.viewMatrix();
     const bool ownCamera = shadowCameraRequest_ != nullptr;
+    view.viewProjection =
+        ownCamera ? frame.shadowView.projectionMatrix() * frame.shadowView.viewMatrix() : frame.viewProjection;
     InstanceList shadowCameraVisible;
     if (ownCamera)
         culler_.visible(frame.scene, clipPlanes(view.viewProjection), frame.settings.skip.hierarchicalCulling,

@@ -86,8 +86,9 @@ void guardedLispsmSetup(const ViewFrustum& view, const ViewFrustum& sub, const S
                         const Aabb& sceneBounds, ShadowParams p, const std::vector<SurfacePoint>& fine,
                         CascadeSplit& split) {
     split.setup = computeShadowSetup(sub, light, sceneBounds, p);
+    if (!split.setup.valid || p.lispsm.overrideN || fine.empty()) return;
     const std::vector<detail::ReceiverSample> dense = detail::measuredReceiverSamples(light, fine);
-    if (!split.setup.valid || p.lispsm.overrideN || dense.empty()) return;
+    if (dense.empty()) return;
     p.receiverPoints = fine;
     p.fineReceiverPoints.clear();  // (a spot cone's fallback would join them again)
     ShadowSetup fromFine = computeShadowSetup(sub, light, sceneBounds, p);
