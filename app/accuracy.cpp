@@ -1,8 +1,8 @@
 #include "accuracy.h"
 
-#include "frame_setup.h"
+#include "frame/frame_setup.h"
 #include "math/error_theory.h"
-#include "render_target.h"
+#include "resources/render_target.h"
 
 #include <algorithm>
 #include <chrono>

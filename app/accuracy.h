@@ -3,7 +3,7 @@
 // viewer's accuracy panel: texel footprint (true and bisector normals), error along view depth,
 // ground truth (E_total / E_edge against Embree rays), distance to the logarithmic limit, and
 // temporal stability along a scripted camera path.
-#include "aliasing_stats.h"
+#include "measure/aliasing_stats.h"
 #include "groundtruth/ray_scene.h"
 #include "groundtruth/shadow_truth.h"
 #include "renderer.h"

@@ -1,7 +1,7 @@
 #include "view_setup.h"
 
-#include "frame_setup.h"
-#include "png_text.h"
+#include "frame/frame_setup.h"
+#include "image/png_text.h"
 #include "scenes/gltf_loader.h"
 #include "settings/method_choice.h"
 

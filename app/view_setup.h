@@ -34,7 +34,7 @@ bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std:
 bool readTextFile(const std::string& file, std::string& text, std::string& error);
 
 // Applies a view state to `settings` (all of it or, on error, nothing): a JSON file, or a PNG
-// screenshot shadowlab saved, whose settings JSON sits in a tEXt chunk (renderer/png_text.h).
+// screenshot shadowlab saved, whose settings JSON sits in a tEXt chunk (renderer/image/png_text.h).
 bool readViewFile(const std::string& file, Settings& settings, std::string& error);
 
 }  // namespace shadowlab::app

@@ -1,7 +1,7 @@
 #include "renderer.h"
 #include "renderer_frame.h"
 #include "gl/sanitizer_support.h"
-#include "view_pool.h"
+#include "resources/view_pool.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -8,18 +8,18 @@
 //   shadow pass (depth map; skipped when its key is unchanged)  ->
 //   [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
 // What a frame skips when it does not need it is switchable in Settings::skip (README).
-#include "cascade_maps.h"
+#include "resources/cascade_maps.h"
 #include "culling/instance_culling.h"
-#include "frame_setup.h"
-#include "frame_stats.h"
+#include "frame/frame_setup.h"
+#include "frame/frame_stats.h"
 #include "gl/program.h"
-#include "gpu_scene.h"
-#include "gpu_timer.h"
-#include "material_programs.h"
-#include "msaa_target.h"
-#include "measure_pass.h"
-#include "shadow_resources.h"
-#include "visible_depth.h"
+#include "resources/gpu_scene.h"
+#include "gl/gpu_timer.h"
+#include "passes/material_programs.h"
+#include "resources/msaa_target.h"
+#include "resources/measure_pass.h"
+#include "resources/shadow_resources.h"
+#include "passes/visible_depth.h"
 
 #include <functional>
 #include <memory>

@@ -3,7 +3,7 @@
 // in one storage buffer; a draw selects its entry with uMaterial (one integer per draw at a cached
 // location: no per-draw uniform lookups by name).
 //
-// Variants by #define (renderer/material_programs.h): MATERIAL_TEXTURED and MATERIAL_ALPHA_TEST,
+// Variants by #define (renderer/passes/material_programs.h): MATERIAL_TEXTURED and MATERIAL_ALPHA_TEST,
 // each 0 or 1, fix at compile time what the generic program (neither defined) decides per
 // material at run time, so untextured materials skip the texture fetch and opaque ones the alpha
 // test (and its discard, which keeps early depth testing on).

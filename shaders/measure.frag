@@ -1,6 +1,6 @@
 #version 450 core
 // Measurement pass: per visible opaque or masked surface pixel, float values for the accuracy
-// instruments (renderer/measure_pass.h) instead of a colour.
+// instruments (renderer/resources/measure_pass.h) instead of a colour.
 #include "material.glsl"
 #include "lighting.glsl"
 

@@ -4,7 +4,7 @@
 // depth range, the per-split parameterization
 // (SSM, stable SSM, LiSPSM), the blend band and the split-colour view; read-outs of each split's
 // depth range and texel size. Edits Settings only.
-#include "frame_stats.h"
+#include "frame/frame_stats.h"
 #include "settings/settings.h"
 
 namespace shadowlab::ui {

@@ -1,7 +1,7 @@
 #include "panels.h"
 
 #include "cascade_panel.h"
-#include "frame_setup.h"
+#include "frame/frame_setup.h"
 #include "settings/method_choice.h"
 #include "widgets.h"
 

@@ -3,7 +3,7 @@
 // struct (the same struct --view JSON and --set fill) and reads plain data: frame stats, the shadow
 // diagnostics, the scene model. No GL include reaches here; the viewer turns the edited settings
 // into frames. Every function returns true when it changed a setting.
-#include "frame_stats.h"
+#include "frame/frame_stats.h"
 #include "scenes/scene.h"
 #include "settings/settings.h"
 

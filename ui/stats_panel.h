@@ -1,7 +1,7 @@
 #pragma once
 // The stats panel: frame rate, CPU/GPU time per pass (GL timer queries, read a few frames late),
 // casters drawn/culled, triangles, shadow map size. ImGui only: it reads plain stats, never GL.
-#include "frame_stats.h"
+#include "frame/frame_stats.h"
 
 #include <string>
 #include <vector>

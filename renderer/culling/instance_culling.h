@@ -4,7 +4,7 @@
 // instance BVH or by the linear loop over every instance (skip.hierarchicalCulling = false).
 // Both give the same ascending index lists. GL-free.
 #include "culling/instance_bvh.h"
-#include "frame_setup.h"
+#include "frame/frame_setup.h"
 
 #include <cstdint>
 #include <vector>

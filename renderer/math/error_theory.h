@@ -3,7 +3,7 @@
 // Fig. 8.6: the view direction parallel to the shadow-map plane (e.g. a horizontal camera under a
 // light shining straight down), no projection aliasing (cos a / cos b = 1, the bisector normal),
 // the map's depth axis spanning the view's [z_n, z_f]. The error is in screen pixels per
-// shadow-map texel, like the GPU footprint measure (renderer/aliasing_stats.h).
+// shadow-map texel, like the GPU footprint measure (renderer/measure/aliasing_stats.h).
 // GL-free, double precision, no state.
 
 namespace shadowlab {

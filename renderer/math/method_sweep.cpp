@@ -50,7 +50,7 @@ GroundSamples groundSamples(const SweepCase& c, const SweepOptions& o) {
         p = v.eye + dir * t;
         return p.x >= c.scene.min.x && p.x <= c.scene.max.x && p.z >= c.scene.min.z && p.z <= c.scene.max.z;
     };
-    // The pre-pass's receiver grids: pixels at the cells' centres (renderer/visible_depth.cpp).
+    // The pre-pass's receiver grids: pixels at the cells' centres (renderer/passes/visible_depth.cpp).
     auto grid = [&](int gx, int gy, std::vector<SurfacePoint>& out) {
         for (int j = 0; j < gy; ++j)
             for (int i = 0; i < gx; ++i) {
@@ -118,7 +118,7 @@ ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum&
         shadowView.zNear = std::min(0.5 * g.nearest, 0.5 * shadowView.zFar);
     p.lispsm.virtualFar = std::clamp(g.farthest, shadowView.zNear * 1.001, shadowView.zFar);
     p.lispsm.pseudoNear = g.nearest;
-    // The pre-pass's receiver grid (renderer/visible_depth.cpp, ShadowParams::kReceiverGridX/Y).
+    // The pre-pass's receiver grid (renderer/passes/visible_depth.cpp, ShadowParams::kReceiverGridX/Y).
     if (receivers) {
         p.receiverPoints = g.grid;
         p.fineReceiverPoints = g.fineGrid;

@@ -23,7 +23,7 @@ struct SweepOptions {
     double imageHeight = 720.0, aspect = 16.0 / 9.0;
     int samplesX = 96, samplesY = 54;  // ground samples per view (a grid over the image)
     // Hand PSM and LiSPSM the visible ground at the depth pre-pass's receiver grid, as the
-    // renderer does (renderer/visible_depth.cpp); false: they see only the depth range and fall
+    // renderer does (renderer/passes/visible_depth.cpp); false: they see only the depth range and fall
     // back to the visible lit body's vertices (a renderer without the pre-pass).
     bool measuredReceivers = true;
 };

@@ -173,7 +173,7 @@ struct SkipSettings {
 };
 
 // Display of the lit view: exposure and tone mapping in linear space before the sRGB encode, the
-// ambient's shape, anti-aliasing, a ground plane (renderer/ground_plane.h). The shadow-term and error views skip exposure and
+// ambient's shape, anti-aliasing, a ground plane (renderer/frame/ground_plane.h). The shadow-term and error views skip exposure and
 // tone mapping (their values are measurements); "none" keeps the lit view linear for measuring too.
 enum class ToneMapping { None, PbrNeutral, Aces };
 struct DisplaySettings {

@@ -1,7 +1,7 @@
-// The bench spec's "methods" and "csmLayers" (app/bench_spec.h) and the method names they use
+// The bench spec's "methods" and "csmLayers" (app/commands/bench_spec.h) and the method names they use
 // (settings/method_choice.h): cascaded choices parse, bad names fail with the list of good ones,
 // and equal memory gives 4 splits layers of half the map's side.
-#include "bench_spec.h"
+#include "commands/bench_spec.h"
 
 #include <gtest/gtest.h>
 

@@ -8,10 +8,10 @@
 // Counters use the keys of `shadowlab render --stats` (frame_stats.h), plus processCpuMsPerFrame:
 // the CPU time of all threads per frame (on llvmpipe that includes the rasterisation). GPU ms from
 // timer queries are not meaningful on llvmpipe, which rasterises when a framebuffer is flushed.
-#include "frame_setup.h"
+#include "frame/frame_setup.h"
 #include "gl/debug_output.h"
-#include "headless_context.h"
-#include "render_target.h"
+#include "gl/headless_context.h"
+#include "resources/render_target.h"
 #include "renderer.h"
 #include "scenes/gltf_loader.h"
 

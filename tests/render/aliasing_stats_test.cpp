@@ -1,5 +1,5 @@
 // Statistics of the raw aliasing-error encoding (GL-free), and the error view through the renderer.
-#include "aliasing_stats.h"
+#include "measure/aliasing_stats.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 

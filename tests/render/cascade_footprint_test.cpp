@@ -1,7 +1,7 @@
 // The per-split breakdown of a measured cascaded frame (GL-free): pixels go to the split the
 // shader picks (the first whose far eye depth they do not exceed), unmeasured pixels nowhere, and
 // the frame's worst pixels are counted where they are.
-#include "cascade_footprint.h"
+#include "measure/cascade_footprint.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // One headless EGL context per test process, with the KHR_debug error counter installed.
 #include "gl/debug_output.h"
-#include "headless_context.h"
+#include "gl/headless_context.h"
 
 #include <gtest/gtest.h>
 

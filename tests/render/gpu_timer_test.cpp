@@ -1,7 +1,7 @@
 // GpuTimer (renderer/gpu_timer.*) on the test context (llvmpipe in CI): a reported GPU time is
 // never longer than the wall-clock time the pass could have taken, also for the very first query
 // of a context, and the renderer's per-pass GPU times of a first frame obey the same bound.
-#include "gpu_timer.h"
+#include "gl/gpu_timer.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 

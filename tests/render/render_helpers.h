@@ -1,9 +1,9 @@
 #pragma once
 // Shared by the renderer tests: render a scene headless, project world points to pixels, and
 // classify ground pixels geometrically (ray casts against boxes) to compare images with truth.
-#include "frame_setup.h"
+#include "frame/frame_setup.h"
 #include "gl_test_context.h"
-#include "render_target.h"
+#include "resources/render_target.h"
 #include "renderer.h"
 
 #include <algorithm>

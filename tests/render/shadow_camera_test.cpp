@@ -1,7 +1,7 @@
 // renderMeasured's shadow camera (the temporal instrument's map-only comparison, app/accuracy.h):
 // the shadows are set up for that camera (pre-pass, B, warp, splits) while the image is drawn from
 // settings.camera; handing the frame's own camera changes nothing.
-#include "measure_frame.h"
+#include "measure/measure_frame.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 

@@ -1,4 +1,4 @@
-// `shadowlab generate` (app/cmd_generate.cpp) through CLI11, without the rest of the app.
+// `shadowlab generate` (app/commands/cmd_generate.cpp) through CLI11, without the rest of the app.
 #include "commands.h"
 #include "gltf_inspect.h"
 #include "scenes/generators/scene_generators.h"

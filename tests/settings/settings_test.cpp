@@ -1,5 +1,5 @@
 // The settings contract: JSON round trip, --set keys, refusal of bad input, clamping.
-#include "frame_setup.h"
+#include "frame/frame_setup.h"
 #include "settings/method_choice.h"
 #include "settings/settings.h"
 

@@ -1,6 +1,6 @@
 // The viewer's orbit / fly camera (GL-free, GLFW-free): input deltas in, CameraSettings out.
-#include "camera_controller.h"
-#include "frame_setup.h"
+#include "viewer/camera_controller.h"
+#include "frame/frame_setup.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // A/B compare images (GL-free): identical renders give a black difference, the difference is
 // |A - B| x gain, the wipe takes A left of the line and B from it on.
-#include "image_compare.h"
+#include "image/image_compare.h"
 
 #include <gtest/gtest.h>
 

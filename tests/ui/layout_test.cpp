@@ -2,8 +2,8 @@
 // readable, the keys help inside the control window, the control window folding away so the 3D
 // area takes the full width, and a clicked inset enlarged without covering the others.
 #include "panels.h"
-#include "viewer_frame.h"
-#include "viewer_input.h"
+#include "viewer/viewer_frame.h"
+#include "viewer/viewer_input.h"
 #include "imgui_frame_test.h"
 
 #include <gtest/gtest.h>

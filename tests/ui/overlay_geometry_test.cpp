@@ -1,6 +1,6 @@
 // What the overlays draw, without a GL context: the wireframes follow the toggles and the
 // diagnostics, and the observer camera sees the view frustum and B from outside.
-#include "overlay_geometry.h"
+#include "overlays/overlay_geometry.h"
 
 #include <gtest/gtest.h>
 

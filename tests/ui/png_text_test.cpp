@@ -1,6 +1,6 @@
 // Settings embedded in a PNG tEXt chunk: what a screenshot carries so it can be reproduced.
-#include "image.h"
-#include "png_text.h"
+#include "image/image.h"
+#include "image/png_text.h"
 #include "settings/settings.h"
 
 #include <gtest/gtest.h>

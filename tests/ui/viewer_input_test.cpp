@@ -1,6 +1,6 @@
 // The viewer's event-driven input (GLFW-free): a key tap shorter than a frame is still a press in
 // the queue, drags are measured from the press position, fly keys count taps.
-#include "viewer_input.h"
+#include "viewer/viewer_input.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,9 +1,9 @@
-// The viewer's accuracy panel measures what its columns say (app/viewer_accuracy.cpp), headless:
+// The viewer's accuracy panel measures what its columns say (app/viewer/viewer_accuracy.cpp), headless:
 // the ssm / psm / lispsm columns are one map each even while the view shows cascades, and the
 // cascades the view shows come as a fourth column, named by their choice.
 #include "render_helpers.h"
 #include "test_scenes.h"
-#include "viewer_accuracy.h"
+#include "viewer/viewer_accuracy.h"
 
 #include <gtest/gtest.h>
 

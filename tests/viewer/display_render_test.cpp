@@ -2,7 +2,7 @@
 // operators on known values, the edge-aware blur not crossing a depth edge, and no shadow-test
 // hatching on facets that face away from the light (thesis 6.2).
 #include "gl/program.h"
-#include "ground_plane.h"
+#include "frame/ground_plane.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 

@@ -3,8 +3,8 @@
 // far to bright (also for reversed PSM maps), the scene inset draws the scene, and every call
 // leaves the GL state as it found it.
 #include "gl_test_context.h"
-#include "overlay.h"
-#include "render_target.h"
+#include "overlays/overlay.h"
+#include "resources/render_target.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include "render_helpers.h"
 #include "settings/method_choice.h"
 #include "test_scenes.h"
-#include "viewer_frame.h"
+#include "viewer/viewer_frame.h"
 
 #include <gtest/gtest.h>
 

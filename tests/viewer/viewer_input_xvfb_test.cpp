@@ -1,8 +1,8 @@
 // The real viewer under Xvfb driven by synthetic X events (tests/viewer/x11_send_input.cpp): key
 // taps far shorter than a frame all register, and a drag is measured from where the button went
 // down. The viewer runs until the synthetic close request and writes its settings (--save-view).
-#include "image.h"
-#include "png_text.h"
+#include "image/image.h"
+#include "image/png_text.h"
 #include "settings/settings.h"
 
 #include <gtest/gtest.h>

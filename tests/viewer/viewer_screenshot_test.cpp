@@ -3,7 +3,7 @@
 // and checks the screenshots: the panels are there, every overlay toggle changes the pixels of
 // its inset and nothing else, split compare draws separated views, and the saved view state is
 // the file `shadowlab render --view` takes and reproduces the frame headless.
-#include "image.h"
+#include "image/image.h"
 #include "settings/settings.h"
 
 #include <gtest/gtest.h>

@@ -1,0 +1,153 @@
+#include "viewer/viewer_open.h"
+
+#include "scenes/animation.h"
+
+#include <GLFW/glfw3.h>
+
+#include "widgets.h"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <utility>
+
+namespace shadowlab::app {
+
+namespace {
+
+ui::AnimationInfo animationInfo(const Scene& scene) {
+    ui::AnimationInfo info;
+    info.duration = sceneAnimationDuration(scene);
+    info.animations = int(scene.animations.size());
+    for (const Animation& a : scene.animations) info.channels += int(a.channels.size());
+    return info;
+}
+
+// Applies a view state (JSON, or the settings embedded in a screenshot) as a whole or not at all.
+void applyViewFile(ViewerState& state, const std::string& file) {
+    Settings loaded = state.settings;
+    std::string error;
+    if (!readViewFile(file, loaded, error)) {
+        state.status.lastError = error;
+        std::cerr << "shadowlab: " << error << "\n";
+        return;
+    }
+    addNotices(state.status, sanitize(loaded));
+    state.settings = loaded;
+    state.status.lastError.clear();
+    state.status.lastMessage = "applied view " + file;
+    state.file.remember(file);
+}
+
+// The settings of the command line's scene: the scene's own, the overrides, then --ab's A.
+void applyInitialSettings(ViewerState& state, const Scene& scene, const SettingsOverrides& overrides) {
+    state.settings = initialSettings(scene);
+    std::string error;
+    if (!applyOverrides(state.settings, overrides, error)) state.status.lastError = error;
+    if (state.abView.empty()) return;
+    Settings a = state.settings;  // A is the command line's settings with that view state on top
+    if (readViewFile(state.abView, a, error)) {
+        state.ab.a = a;
+        state.ab.active = true;
+    } else {
+        state.status.lastError = error;
+    }
+}
+
+}  // namespace
+
+void addNotices(ui::ViewerStatus& status, const std::vector<std::string>& changes, const std::string& prefix) {
+    for (const std::string& change : changes) {
+        std::cerr << "shadowlab: " << prefix << change << "\n";
+        status.notices.push_back(prefix + change);
+    }
+    constexpr std::size_t kMaxNotices = 6;
+    if (status.notices.size() > kMaxNotices)
+        status.notices.erase(status.notices.begin(), status.notices.end() - kMaxNotices);
+}
+
+void noteSceneNotices(ViewerState& state) {
+    if (!state.scene) return;
+    std::vector<std::string> now = sceneNotices(state.settings, state.scene->lights.size());
+    std::vector<std::string> fresh;
+    for (const std::string& n : now)
+        if (std::find(state.sceneNoticesShown.begin(), state.sceneNoticesShown.end(), n) == state.sceneNoticesShown.end())
+            fresh.push_back(n);
+    addNotices(state.status, fresh, "note: ");
+    state.sceneNoticesShown = std::move(now);
+}
+
+void startSceneLoad(ViewerState& state, const std::string& file) {
+    state.load = std::make_unique<SceneLoadJob>(file, state.loadOptions, [] { glfwPostEmptyEvent(); });
+    state.uploadNext = false;
+}
+
+void openFile(ViewerState& state, const std::string& file) {
+    switch (fileKindOf(file)) {
+        case FileKind::Scene:
+            if (state.load) {
+                state.status.lastError = "still loading " + state.load->file() + "; open " + file + " afterwards";
+                return;
+            }
+            startSceneLoad(state, file);
+            return;
+        case FileKind::View:
+        case FileKind::Screenshot:
+            applyViewFile(state, file);
+            return;
+        case FileKind::Unknown:
+            state.status.lastError = file + ": not a scene (.gltf, .glb), view state (.json) or screenshot (.png)";
+            return;
+    }
+}
+
+void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverrides& overrides) {
+    const std::string file = state.load->file();
+    const double parseSeconds = state.load->secondsRunning();
+    LoadResult loaded = state.load->take();
+    state.load.reset();
+    for (const std::string& w : loaded.warnings) std::cerr << "shadowlab: warning: " << w << "\n";
+    const bool initial = std::exchange(state.initialLoad, false);
+    if (!loaded.ok()) {
+        state.status.lastError = loaded.error;
+        std::cerr << "shadowlab: " << loaded.error << "\n";
+        // A bad scene on the command line: open the default scene instead of exiting.
+        if (initial && !state.scene && file != defaultScenePath()) {
+            state.initialLoad = true;
+            startSceneLoad(state, defaultScenePath());
+        }
+        return;
+    }
+    state.scene = std::move(loaded.scene);
+    state.groundPlane.reset();  // the new scene has none yet; syncGroundPlane adds it if asked
+    Scene& scene = *state.scene;
+    if (initial) {
+        applyInitialSettings(state, scene, overrides);
+    } else {
+        state.settings.camera = initialSettings(scene).camera;
+        state.settings.animation.time = 0.0;
+        state.status.lastError.clear();
+    }
+    // The pose at the view's time, so a loaded view shows the frame it was saved at.
+    animateScene(scene, state.settings.animation.time);
+    state.posedTime = state.settings.animation.time;
+    const auto uploadStart = std::chrono::steady_clock::now();
+    renderer.setScene(scene, true);  // geometry now, the textures over the next frames
+    const double uploadMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uploadStart).count();
+    std::cerr << "shadowlab: opened " << file << " (loaded in " << ui::formatNumber(parseSeconds, 3)
+              << " s off the render thread, GPU upload " << ui::formatNumber(uploadMs, 3) << " ms, "
+              << scene.textures.size() << " textures to follow)\n";
+    state.texturesTotal = scene.textures.size();
+    forgetScene(state.accuracy);
+    state.status.sceneName = file;
+    state.status.sceneTriangles = scene.triangleCount();
+    state.status.lastMessage = "opened " + file;
+    state.animation = animationInfo(scene);
+    state.controller.pivot = scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
+    state.file.remember(file);
+    state.sceneNoticesShown.clear();  // a new scene: its notices are new
+    noteSceneNotices(state);
+}
+
+}  // namespace shadowlab::app

@@ -1,0 +1,45 @@
+#include "frame/frame_stats.h"
+
+#include <nlohmann/json.hpp>
+
+namespace shadowlab {
+
+const char* visibleDepthSourceName(VisibleDepthSource source) {
+    switch (source) {
+        case VisibleDepthSource::NotNeeded: return "not-needed";
+        case VisibleDepthSource::Measured: return "measured";
+        case VisibleDepthSource::Cached: return "cached";
+        case VisibleDepthSource::PreviousFrame: return "previous-frame";
+        case VisibleDepthSource::Fallback: return "fallback";
+    }
+    return "unknown";
+}
+
+std::string frameStatsJson(const FrameStats& s) {
+    using nlohmann::json;
+    auto counts = [](const PassCounts& c) { return json{{"drawCalls", c.drawCalls}, {"triangles", c.triangles}}; };
+    json passes = json::array();
+    for (const PassStats& p : s.passes) passes.push_back({{"name", p.name}, {"cpuMs", p.cpuMs}, {"gpuMs", p.gpuMs}});
+    const json j = {
+        {"drawCalls", s.drawCalls},
+        {"triangles", s.trianglesDrawn},
+        {"shadowPass", counts(s.shadowPass)},
+        {"depthPrePass", counts(s.depthPrePass)},
+        {"forwardPass", counts(s.forwardPass)},
+        {"instances", s.instances},
+        {"instancesVisible", s.instancesVisible},
+        {"instancesCulledView", s.instances - s.instancesVisible},
+        {"castersDrawn", s.castersDrawn},
+        {"castersCulled", s.castersCulled},
+        {"cullingCpuMs", s.cullingCpuMs},
+        {"hierarchicalCulling", s.hierarchicalCulling},
+        {"shadowMapSize", s.shadowMapSize},
+        {"shadowMapReused", s.shadowMapReused},
+        {"cascadeLayersReused", s.cascadeLayersReused},
+        {"visibleDepth", visibleDepthSourceName(s.visibleDepth)},
+        {"passes", passes},
+    };
+    return j.dump(2);
+}
+
+}  // namespace shadowlab
