@@ -1,5 +1,5 @@
 #pragma once
-// The accuracy instruments of one view (issue 10), shared by `render --measure`, `bench` and the
+// The accuracy instruments of one view, shared by `render --measure`, `bench` and the
 // viewer's accuracy panel: texel footprint (true and bisector normals), error along view depth,
 // ground truth (E_total / E_edge against Embree rays), distance to the logarithmic limit, and
 // temporal stability along a scripted camera path.

@@ -1,7 +1,7 @@
 // World -> shadow clip, eye-relative: uWorldToShadowClip is M * translate(uShadowOrigin), built in
 // double on the CPU, and positions are taken relative to uShadowOrigin (the camera, rounded to
 // float) before the product. The world-space float matrix lost ~4 texels to cancellation at 1e5
-// from the origin (issue 9); relative to the camera only the positions' own rounding is left.
+// from the origin; relative to the camera only the positions' own rounding is left.
 uniform mat4 uWorldToShadowClip;
 uniform vec3 uShadowOrigin;
 

@@ -1,5 +1,5 @@
 #pragma once
-// The "Accuracy" panel (issue 10): what the accuracy instruments measured for the current view,
+// The "Accuracy" panel: what the accuracy instruments measured for the current view,
 // per method — footprint against eye depth beside the closed forms of thesis 8.2, a histogram,
 // E_total / E_edge against the ray-cast truth and its mismatch picture — and the colour legend of
 // the aliasing heat map. Plain data in, a request out; the viewer measures (app/viewer/viewer_accuracy.h).

@@ -107,8 +107,8 @@ float controlWindowWidth();
 // The "keys and mouse" help of the View state panel, one control per line.
 extern const char* const kKeysHelp;
 
-// Buttons as wide as their labels, in rows that wrap at `lineWidth` (item 10 of issue 14: fixed
-// half-width buttons cut long camera names). A label wider than a whole line is shortened with
+// Buttons as wide as their labels, in rows that wrap at `lineWidth` (fixed half-width
+// buttons would cut long camera names). A label wider than a whole line is shortened with
 // "..." to fit. Pure layout, for the camera presets and their test.
 struct FlowItem {
     int row = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The "Skips" panel (issue 11): each piece of work the renderer skips when a frame does not need
+// The "Skips" panel: each piece of work the renderer skips when a frame does not need
 // it can be switched off here, to compare cost and to see that the picture does not change.
 #include "settings/settings.h"
 

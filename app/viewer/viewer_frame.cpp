@@ -125,7 +125,7 @@ void drawInsets(FrameTools tools, const Scene& scene, const Settings& settings, 
     const LightFrame light = resolveLight(scene, settings.light, seconds);
     const bool haveMap = result.stats.shadowMapSize > 0 && renderer.lastShadowSetup().valid;
     const ShadowSetup& setup = renderer.lastShadowSetup();
-    // Cascades (issue 13): every layer in the shadow-map inset, every split's slice and B_i in the
+    // Cascades: every layer in the shadow-map inset, every split's slice and B_i in the
     // observer, in the split colours of csm.colorSplits; the light view of every split side by side.
     const CascadeSetup& cascades = renderer.lastCascadeSetup();
     const bool cascaded = !cascades.splits.empty() && renderer.cascadeMapTexture() != 0;

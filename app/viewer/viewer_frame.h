@@ -24,7 +24,7 @@ struct Layout {
 InsetRect toGl(const InsetRect& r, int fbHeight);
 bool contains(const InsetRect& r, double x, double y);
 
-// An inset of the 3D area; a click on one enlarges it (item 9 of issue 14), a second click shrinks it.
+// An inset of the 3D area; a click on one enlarges it, a second click shrinks it.
 enum class InsetKind { None, ShadowMap, LightView, Observer };
 InsetKind insetAt(const Layout& layout, double x, double y);
 

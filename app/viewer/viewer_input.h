@@ -1,11 +1,11 @@
 #pragma once
 // The viewer's input as events, not as state polled once per frame (GLFW-free, testable).
 //
-// At 3-5 fps a key tap shorter than a frame used to be lost: the press and the release both
+// At 3-5 fps a key tap shorter than a frame would be lost to polling: the press and the release both
 // arrive in one glfwPollEvents(), and polling the key state afterwards sees it released. Here the
 // GLFW callbacks push every event into an InputQueue; each frame drains it in order, so a tap is a
 // press event whatever the frame rate. Drags are measured from where the button went down, never
-// from the cursor position of the previous frame (a click after entering the window used to swing
+// from the cursor position of the previous frame (else a click after entering the window would swing
 // the view by the distance the cursor travelled outside it).
 #include "settings/settings.h"
 

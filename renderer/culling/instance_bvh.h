@@ -1,6 +1,6 @@
 #pragma once
 // A bounding-volume hierarchy over instance bounds, for view-frustum and caster culling that
-// grows sub-linearly with the instance count (issue 11: 10k / 100k / 1M instances). GL-free.
+// grows sub-linearly with the instance count (benchmarked at 10k / 100k / 1M instances). GL-free.
 //
 // Built once per scene (median split on the longest centroid axis, up to kLeafSize instances
 // per leaf) and refitted when animation moves instances: the tree keeps its topology, the boxes

@@ -2,15 +2,14 @@
 // GPU time of a pass with GL_TIME_ELAPSED queries. Results are read a few frames later so the
 // CPU never waits on the GPU; `lastMs` is the newest finished measurement (0 before the first).
 //
-// Two ways a timer used to report a wrong time, both guarded here:
-// - Stale: results were read newest-before-oldest (the ring was walked from next_ + 1, so the
-//   oldest slot came last), and a finished newer query was read past an unfinished older one,
-//   which then overwrote it a frame later. Now the ring is read oldest first and stops at the
-//   first unfinished query (one context's queries finish in the order they were issued).
+// Two ways a timer can report a wrong time, both guarded here:
+// - Stale: reading newest-before-oldest, or a finished newer query past an unfinished older one,
+//   lets the older result overwrite the newer a frame later. So the ring is read oldest first and
+//   stops at the first unfinished query (one context's queries finish in the order they were issued).
 // - Impossible: llvmpipe's TIME_ELAPSED result is max(end) - min(start) over its raster threads,
 //   with min(start) = UINT64_MAX when no thread recorded a start (Mesa, lp_query.c), i.e. the
-//   result is then the raw CLOCK_MONOTONIC time: 6.1e6 and 7.7e6 ms in the issue-10 benches
-//   (the machine's uptime). A pass cannot take longer on the GPU than the wall-clock time from
+//   result is then the raw CLOCK_MONOTONIC time (the machine's uptime, e.g. 6.1e6 ms
+//   in a render bench). A pass cannot take longer on the GPU than the wall-clock time from
 //   begin() until its result was read, so a longer result is dropped (lastMs becomes 0, "no
 //   measurement") and counted in `rejected()`.
 #include "gl/gl_objects.h"

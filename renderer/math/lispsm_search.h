@@ -1,5 +1,5 @@
 #pragma once
-// The choice of LiSPSM's warp by measurement (beyond the thesis; issue 9). Eq. 8.11/8.13 give n
+// The choice of LiSPSM's warp by measurement (beyond the thesis). Eq. 8.11/8.13 give n
 // for an idealized view ray with P's near plane at the eye's; on ordinary views (a low sun ahead
 // of or behind the viewer, an eye far above the ground, interiors with a tiny near plane) that n
 // over-warps and the map loses to plain SSM (measured: p99 footprint > 1.5x SSM on 21% of random

@@ -1,5 +1,5 @@
 #pragma once
-// The method-comparison sweep (issue 9): random walk-through views over a ground plane, each lit by
+// The method-comparison sweep: random walk-through views over a ground plane, each lit by
 // a sun or by a spot light above the ground aiming into the view, and for every method the same
 // error figure: the 99th percentile over the visible ground points inside the map of the texel
 // footprint m (math/texel_footprint.h, receiver normal = the ground's). PSM and LiSPSM are compared

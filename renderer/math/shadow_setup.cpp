@@ -44,7 +44,7 @@ void casterCullingData(const ConvexBody& B, const ShadowLight& light, const Spot
         std::erase_if(out.bodyPlanes, [&](const glm::dvec4& p) {
             // The light's distance to the plane, with the plane's own normal: with the axis in
             // its place the error is |n + axis| |position|, which at 7e4 from the origin let a
-            // cap survive and cull casters between the apex and L's near plane (issue 9).
+            // cap survive and cull casters between the apex and L's near plane.
             const double depth = glm::dot(glm::dvec3(p), light.position) + p.w;
             return glm::dot(glm::dvec3(p), -axis) > 1.0 - 1e-6 && depth <= 2.0 * spotF.nearPlane;
         });
@@ -88,8 +88,8 @@ std::vector<glm::dvec3> unfocusedPoints(const std::vector<glm::dvec3>& bv, const
 }
 
 // PSM (psm.cpp) with its guard: where its largest texel footprint over the receivers is worse
-// than the focused uniform map's (`uniform`), that map is used and the fallback says so. Issue 9
-// measured PSM above 1.5x SSM's footprint on 2.5% of sun and 8% of spot views without it;
+// than the focused uniform map's (`uniform`), that map is used and the fallback says so. The method
+// sweep (math/method_sweep.h) measured PSM above 1.5x SSM's footprint on 2.5% of sun and 8% of spot views without it;
 // Stamminger & Drettakis (section 6) name such hard cases. `receivers` null: no guard.
 glm::dmat4 guardedPsm(const ViewFrustum& view, const ViewBasis& basis, const ShadowLight& light,
                       const std::vector<glm::dvec3>& bv, const glm::dmat4& uniform,

@@ -1,6 +1,6 @@
 #pragma once
 // The stress suite of the shadow math: random (reproducible) configurations covering the corner
-// cases of the issue — fov 10..120 deg, near 1e-4..10, far/near up to 1e6, light directions
+// cases a viewer meets — fov 10..120 deg, near 1e-4..10, far/near up to 1e6, light directions
 // exactly parallel / antiparallel / perpendicular to the view, spot lights inside and outside the
 // view, scene bounds from zero thickness to 1e5 wide, world offsets up to 1e5 — checked per
 // method for NaN/Inf, for B's vertices landing in the clip cube, for sampled points of V n S

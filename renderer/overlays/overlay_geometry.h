@@ -33,7 +33,7 @@ std::vector<WireSet> overlayWires(const ShadowDiagnostics& diagnostics, const Ov
 // blue, yellow from near to far; splits beyond the fourth repeat them.
 glm::vec4 cascadeColor(int split);
 
-// Cascaded shadow maps (issue 13): for every split its slice of the view frustum (overlays.drawV,
+// Cascaded shadow maps: for every split its slice of the view frustum (overlays.drawV,
 // drawn darker) and its B_i (overlays.drawB), in the split's colour. Splits without a valid setup
 // draw their slice only. `view` is the whole view frustum the splits divide.
 std::vector<WireSet> cascadeWires(const CascadeSetup& cascades, const OverlaySettings& overlays,

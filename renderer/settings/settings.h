@@ -72,7 +72,7 @@ struct PsmSettings {
     // post-perspective space, which a near plane of 0.01 squeezes into a sliver.
     bool autoNear = true;
     // Fall back to the focused uniform map where PSM's largest texel footprint over the visible
-    // receivers is worse (issue 9's sweep: PSM above 1.5x SSM on 2.5% of sun views without it).
+    // receivers is worse (the method sweep: PSM above 1.5x SSM on 2.5% of sun views without it).
     bool guard = true;
     bool operator==(const PsmSettings&) const = default;
 };
@@ -161,7 +161,7 @@ struct AnimationSettings {
     bool operator==(const AnimationSettings&) const = default;
 };
 
-// Work the renderer skips when a frame does not need it (issue 11). Each switch exists so a user
+// Work the renderer skips when a frame does not need it. Each switch exists so a user
 // and a test can compare: with every skip on or off a frame must look the same.
 struct SkipSettings {
     bool reuseShadowMap = true;        // keep last frame's map when nothing it depends on changed

@@ -1,6 +1,6 @@
 // CPU cost of the shadow setup per light per frame: B + matrix (+ diagnostics) per method, on a
 // typical view: camera 2 m above a 1 km terrain looking slightly down, sun at 35 deg elevation
-// from the side, spot light ahead of the camera. Goal (issue): LiSPSM and PSM <= 10 us per light
+// from the side, spot light ahead of the camera. Goal: LiSPSM and PSM <= 10 us per light
 // per frame and <= 1.5x SSM.
 #include "math/shadow_setup.h"
 

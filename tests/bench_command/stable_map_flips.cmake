@@ -1,4 +1,4 @@
-# Shimmering of the map alone (issue 13, stable shadow maps): the temporal instrument draws the
+# Shimmering of the map alone (stable shadow maps): the temporal instrument draws the
 # first frame again from its own camera with the shadows set up for the moved camera, so every
 # pixel shows the same surface point and only the map differs. On the forest's side-sun view the
 # stable cascades must not change one pixel's state under the 1 px step, the 0.1 deg turn and the

@@ -1,4 +1,4 @@
-# A warped map's depth distribution, judged by the ground truth (issue 9 follow-up): one LiSPSM map
+# A warped map's depth distribution, judged by the ground truth: one LiSPSM map
 # on the street with the sun behind the camera. With hyperbolic z the slope-scale offset in the
 # warped depth swallows the car and wall shadows (false light ~3.9% at 640x360); the default
 # `bias.distribution=auto` stores linear depth for the warps and must keep them. Both are run, so

@@ -1,4 +1,4 @@
-// Culling cost against the instance count (issue 11): view-frustum and caster culling through the
+// Culling cost against the instance count: view-frustum and caster culling through the
 // instance BVH and by the linear loop, plus BVH build and refit, GL-free.
 //   shadowlab_bench_culling [--benchmark_filter=...]
 // Scenes: the generated forest at 10k instances (scale 1), 100k (scale 10) and 1M (the scale-1

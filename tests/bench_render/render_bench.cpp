@@ -1,5 +1,5 @@
 // Frame cost per shadow method on real scenes, headless (EGL): CPU ms of the whole frame and GPU ms
-// of each pass from timer queries, with every skip on and with each skip off in turn (issue 11).
+// of each pass from timer queries, with every skip on and with each skip off in turn.
 // On llvmpipe the GPU numbers are CPU rasterisation; run on a GPU machine for hardware timings.
 //   shadowlab_bench_render [--benchmark_filter=...]   (scenes: the generated forest and Sponza)
 // Benchmarks are named SCENE/METHOD/VARIANT/CAMERA: VARIANT is "all-skips", "no-<skip>" or

@@ -1,5 +1,5 @@
 // The method-comparison sweep (renderer/math/method_sweep.h) as a CTest smoke run, and the named
-// LiSPSM cases of issue 9: the picture stays continuous as gamma passes 0, spot lights at
+// LiSPSM cases: the picture stays continuous as gamma passes 0, spot lights at
 // gamma ~ 89 deg warp, and the footprint metric against a hand-computed case.
 #include "math/method_sweep.h"
 #include "math/texel_footprint.h"
@@ -87,7 +87,7 @@ SweepCase groundCase(double yawDeg, double sunElevationDeg) {
     return c;
 }
 
-// Issue 9, defect 2: a low sun behind the viewer, the view turning through gamma = 0 (the view
+// A low sun behind the viewer, the view turning through gamma = 0 (the view
 // direction's shadow-plane projection parallel to the light's). The picture must change
 // continuously: no over-warp near gamma = 0 (the footprint never above SSM's) and no flip of the
 // warp side under a 0.2 deg turn (neighbouring yaws give nearly the same footprint).
@@ -111,8 +111,8 @@ TEST(LispsmContinuity, PictureIsContinuousAsGammaPassesZero) {
         EXPECT_NEAR(footprint[i], footprint[footprint.size() - 1 - i], 1e-3 * footprint[i]) << "step " << i;
 }
 
-// Issue 9, defect 4: a spot light whose closed form gives z1/z0 <= 1 used to become SSM without
-// a word, at gamma ~ 89 deg where warping helps most. Now the measured warp applies and beats SSM.
+// A spot light whose closed form gives z1/z0 <= 1, at gamma ~ 89 deg where warping helps most:
+// it must not silently become SSM; the measured warp applies and beats SSM.
 TEST(LispsmSpot, SpotAcrossTheViewWarps) {
     SweepCase c = groundCase(0.0, 45.0);
     c.light.kind = ShadowLightKind::Spot;

@@ -1,4 +1,4 @@
-// B, SSM, PSM and LiSPSM: named geometric cases and the invariants of the issue.
+// B, SSM, PSM and LiSPSM: named geometric cases and the invariants every method must keep.
 #include "math/shadow_setup.h"
 #include "shadow_setup_fixtures.h"
 

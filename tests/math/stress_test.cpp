@@ -28,9 +28,9 @@ TEST(ShadowStress, RandomConfigurationsHaveNoNanAndContainB) {
     EXPECT_TRUE(report.passed());
 }
 
-// Issue 9, defect 5: a spot light ~7e4 from the origin whose near cap plane was matched with the
-// light axis instead of its own normal, so the cap survived in culling and a caster between the
-// apex and L's near plane was culled (seed 1, case 122134 of 200,000).
+// A spot light ~7e4 from the origin: if its near cap plane is matched with the light axis
+// instead of its own normal, the cap survives in culling and a caster between the
+// apex and L's near plane is culled (seed 1, case 122134 of 200,000).
 TEST(ShadowStress, SpotCapFarFromTheOriginKeepsCastersNearTheApex) {
     StressOptions options;
     options.seed = 1;

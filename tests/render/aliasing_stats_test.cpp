@@ -82,11 +82,11 @@ TEST_F(AliasingRender, LispsmReducesTheMedianErrorAlongTheGround) {
     EXPECT_LT(lispsm.median, ssm.median * 0.8) << "ssm " << ssm.median << ", lispsm " << lispsm.median;
 }
 
-// Item 11 of issue 14, the grey speckles: where J = d(texel)/d(pixel) is very anisotropic (a
-// surface almost edge-on to the light), sigma_min from (F - sqrt(F^2 - 4 det^2)) / 2 cancelled to
-// 0 in float and the pixel was shown as unmeasured. Looking down at the ground under a sun 0.003
+// Grey speckles: where J = d(texel)/d(pixel) is very anisotropic (a surface almost edge-on to
+// the light), sigma_min from (F - sqrt(F^2 - 4 det^2)) / 2 cancels to 0 in float and the pixel
+// would be shown as unmeasured. Looking down at the ground under a sun 0.003
 // degrees above the horizon (sigma ratio ~2e4), every pixel is inside the map and must be measured
-// (raw G = 1). The old formula left 28854 of the 49152 pixels unmeasured with SSM, 30630 with LiSPSM.
+// (raw G = 1). The cancelling formula leaves 28854 of the 49152 pixels unmeasured with SSM, 30630 with LiSPSM.
 TEST_F(AliasingRender, SurfacesAlmostEdgeOnToTheLightAreMeasuredNotGrey) {
     Scene scene = planeBoxScene(glm::normalize(glm::dvec3(1.0, -0.00005, 0.3)));
     Settings s = lookAt({0.5, 6.0, 0.5}, {0.0, 0.0, 0.0});

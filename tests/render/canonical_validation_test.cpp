@@ -1,4 +1,4 @@
-// The canonical validation of the accuracy instruments (issue 10): the GPU footprint measure with
+// The canonical validation of the accuracy instruments: the GPU footprint measure with
 // bisector normals against the closed forms of thesis ch. 8.2 for SSM, PSM and LiSPSM, within 5%
 // in every log-depth bin. The case and why it is built this way: renderer/measure/canonical_case.h.
 // SHADOWLAB_DEBUG_BINS=1 prints the bins (measured 0.02-0.05% from theory on llvmpipe).

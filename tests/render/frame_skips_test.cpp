@@ -1,4 +1,4 @@
-// Issue 11: every skip (shadow-map reuse, BVH culling, async depth readback, grouped draws, shader
+// Every skip (shadow-map reuse, BVH culling, async depth readback, grouped draws, shader
 // variants) changes the work, never the picture. The forest's views and Sponza are rendered with
 // every skip on and with every skip off and must give identical images; small images keep this
 // fast on llvmpipe.
@@ -131,7 +131,7 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     EXPECT_FALSE(firstFrame(scene, s).shadowMapReused);
 }
 
-// Cascades (issue 13): each layer is reused on its own. Skips on and off give the same pixels for
+// Cascades: each layer is reused on its own. Skips on and off give the same pixels for
 // every per-split parameterisation; a still camera reuses every layer; a moved light re-renders
 // them all; a camera move that changes only the far splits keeps the near ones (stable splits:
 // their texel grid is fixed to the world, so a move along the view axis within one texel of the
@@ -170,7 +170,7 @@ TEST_F(FrameSkips, CascadeLayersAreReusedWhileTheirSplitStays) {
     EXPECT_EQ(stats.cascadeLayersReused, moved.csm.splits);
 }
 
-// Stable cascades under small camera steps (issue 13, shimmering): the map's grid is fixed to the
+// Stable cascades under small camera steps (shimmering): the map's grid is fixed to the
 // world and its split ranges and depth rows are snapped, so a 1 cm sideways step leaves most
 // frames' layers exactly as they were (the reuse key matches: same matrix, depth range and
 // casters). The focused splits re-fit to every step (the control).

@@ -26,10 +26,10 @@ void clearTarget(const RenderTarget& target) {
 
 class GpuTimerTest : public test::RenderTest {};
 
-// The regression: a query begun before the context has used any framebuffer. llvmpipe then
+// A query begun before the context has used any framebuffer. llvmpipe then
 // records no start on any raster thread and returns end - UINT64_MAX, the raw CLOCK_MONOTONIC
-// time (the machine's uptime: 6.1e6 ms and 7.7e6 ms in the issue-10 benches; measured 385,650 ms
-// at 390 s uptime with a standalone EGL program). The timer must drop such a result.
+// time (the machine's uptime: 6.1e6 ms and 7.7e6 ms seen in render benches; 385,650 ms at 390 s
+// uptime with a standalone EGL program). The timer must drop such a result.
 TEST_F(GpuTimerTest, FirstQueryOfAFreshContextIsNeverLongerThanTheWallClock) {
     RenderTarget target(256, 256);
     GpuTimer timer;

@@ -1,4 +1,4 @@
-// Issue 9, defect 6: large worlds keep sub-texel shadow precision. The plane-and-box scene moved
+// Large worlds keep sub-texel shadow precision. The plane-and-box scene moved
 // 1e5 from the origin (camera and light with it) must show the same shadow as at the origin, for
 // every method: the shadow and camera matrices go to the GPU relative to the camera
 // (shaders/shadow_clip.glsl, forward.vert).

@@ -1,7 +1,7 @@
-// Decompression bombs inside an image (issue 12's fuzz find, rebuilt synthetic): a PNG whose header
-// is small and inside every budget, but whose zlib stream inflates far past it. stb_image keeps
-// the first bytes and ignores the rest, so before the bounded decoder (scenes/image_decode.cpp) such
-// a file *loaded*, after its inflate buffer had doubled to the stream's full size. And the other
+// Decompression bombs inside an image (a fuzzing find, built synthetic): a PNG whose header is
+// small and inside every budget, but whose zlib stream inflates far past it. stb_image keeps the
+// first bytes and ignores the rest, so without the bounded decoder (scenes/image_decode.cpp) such
+// a file loads, after its inflate buffer has doubled to the stream's full size. And the other
 // side of the bound: legitimate images whose decode needs the most memory for their size still
 // decode.
 #include "gltf_fixture.h"
@@ -93,7 +93,7 @@ std::uint64_t filteredBytes(std::uint32_t width, std::uint32_t height, std::uint
     return bytes;
 }
 
-// The issue's criterion for hostile files: the most resident memory a load of `file` added, in a
+// The memory criterion for hostile files: the most resident memory a load of `file` added, in a
 // forked child (a fresh high-water mark; ctest may run this test after others in one process).
 struct ChildLoad {
     int exitCode = -1;  // 0: refused as a bomb, 1: loaded, 2: refused for another reason

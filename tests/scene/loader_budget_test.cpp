@@ -1,7 +1,6 @@
-// Hostile files (issue 12's probe, rebuilt tiny in memory): every one is refused or defused from
-// its declared counts and image headers, never by allocating first. Each test would fail on the
-// loader before the budgets: it either loaded the file (after gigabytes and a minute) or reported
-// a decode error instead of the budget's warning.
+// Hostile files (built tiny in memory): every one is refused or defused from its declared counts
+// and image headers, never by allocating first. Without the budgets the loader would either load
+// the file (after gigabytes and a minute) or report a decode error instead of the budget's warning.
 #include "gltf_fixture.h"
 #include "scenes/gltf_loader.h"
 

@@ -1,4 +1,4 @@
-// Hostile settings input (issue 12's probe): --set values and view JSON that used to reach
+// Hostile settings input: --set values and view JSON that could reach
 // undefined float->int casts, leak library messages, echo 50 MB values or be accepted silently.
 // Every case is refused with a message naming the key, or clamped by sanitize with a notice.
 #include "settings/settings.h"
@@ -194,7 +194,7 @@ TEST(SettingsInput, SettingsTheSceneMakesMeaninglessGiveNotices) {
 namespace shadowlab {
 namespace {
 
-// Found by fuzz_settings (issue 12): both aborted the process with an uncaught json exception.
+// Found by fuzz_settings: without a guard both abort the process with an uncaught json exception.
 TEST(SettingsInput, FuzzFoundInputsGiveMessagesNotAborts) {
     Settings s;
     std::string error;

@@ -1,4 +1,4 @@
-// Layout of the viewer (item 9 and 10 of issue 14): camera preset buttons that keep long names
+// Layout of the viewer: camera preset buttons that keep long names
 // readable, the keys help inside the control window, the control window folding away so the 3D
 // area takes the full width, and a clicked inset enlarged without covering the others.
 #include "panels.h"
@@ -151,9 +151,9 @@ TEST(ViewerLayout, WithCascadesTheMapAndLightInsetsHaveASquarePerLayerAndAllFit)
     }
 }
 
-// Issue 13: each view of a split compare renders its own choice (one map, or cascades with its
+// Each view of a split compare renders its own choice (one map, or cascades with its
 // parameterisation per split), whatever the Method panel's method and csm.enabled say, and is
-// captioned with its name. (Before: csm on drew cascades only in the first view of the method.)
+// captioned with its name; in particular csm on must not draw cascades in the first view only.
 TEST(SplitPanes, EachViewAppliesItsOwnChoiceOneMapOrCascades) {
     Settings s;
     s.method = ShadowMethod::Psm;

@@ -98,7 +98,7 @@ TEST(OverlayGeometry, ObserverSeesTheCameraAndBFromOutside) {
         for (int j = 0; j < 4; ++j) EXPECT_TRUE(std::isfinite(top.view[i][j]));
 }
 
-// Issue 13's per-split overlays: each split's frustum slice and B_i in the split's colour.
+// Per-split overlays of cascades: each split's frustum slice and B_i in the split's colour.
 TEST(OverlayGeometry, CascadeWiresShowEverySplitsSliceAndBodyInItsColour) {
     CascadeParams params;
     params.splits = 3;

@@ -102,7 +102,7 @@ TEST_F(OverlayRenderTest, DepthInsetMapsNearToDarkAndMarksEmptyTexels) {
     EXPECT_GT(pixel(image, 120, 64).b, pixel(image, 120, 64).r + 20);
 }
 
-// Cascades (issue 13): the layers of the depth array side by side, each fitted to its own range
+// Cascades: the layers of the depth array side by side, each fitted to its own range
 // (layer 0 a ramp left to right, layer 1 the same ramp right to left, layer 2 empty), under a
 // strip in its split's colour.
 TEST_F(OverlayRenderTest, LayeredDepthInsetShowsEveryCascadeLayerSideBySide) {

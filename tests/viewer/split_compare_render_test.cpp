@@ -1,4 +1,4 @@
-// Issue 13: a split compare of two cascade variants (csm-ssm | csm-lispsm | lispsm) renders each
+// A split compare of two cascade variants (csm-ssm | csm-lispsm | lispsm) renders each
 // view with its own cascades, through the viewer's own pane list (app::splitPanes) and the
 // renderer, headless (EGL): the views get different per-split parameterisations and matrices, the
 // one-map view none, and each cascaded view keeps its own layer array across the others' frames.
@@ -38,7 +38,7 @@ TEST_F(SplitCompareRender, TwoCascadeVariantsRenderAsTwoDifferentCascadeSetups) 
             const FrameStats stats = frame(scene, pane.settings);
             setups.push_back(renderer_->lastCascadeSetup());
             // Last round: every view finds its map or all its layers where it left them (a one-map
-            // view between two cascaded ones used to free their arrays: 0 layers reused).
+            // view between two cascaded ones must not free their arrays).
             if (round < 2) continue;
             if (pane.settings.csm.enabled) {
                 EXPECT_EQ(stats.cascadeLayersReused, s.csm.splits) << pane.caption;
