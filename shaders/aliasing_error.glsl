@@ -17,7 +17,8 @@ vec4 aliasingErrorOutput(vec3 p, bool raw) {
     // Singular values of a 2x2 matrix: sigma^2 = (F -+ sqrt(F^2 - 4 det^2)) / 2, F = |J|_F^2.
     // sigma_min from that difference cancels to 0 or below in float once sigma_max / sigma_min
     // passes ~1e3 (surfaces almost edge-on to the light or the eye): those pixels would show grey,
-    // as if unmeasured (speckles: 30 of 960x540 forest pixels with LiSPSM, 54 with PSM). sigma_min = |det| / sigma_max has no cancellation.
+    // as if unmeasured (speckles: 30 of 960x540 forest pixels with LiSPSM, 54 with PSM).
+    // sigma_min = |det| / sigma_max has no cancellation.
     float f = dot(J[0], J[0]) + dot(J[1], J[1]);
     float det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
     float sigmaMax2 = 0.5 * (f + sqrt(max(f * f - 4.0 * det * det, 0.0)));

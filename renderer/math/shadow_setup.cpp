@@ -88,9 +88,10 @@ std::vector<glm::dvec3> unfocusedPoints(const std::vector<glm::dvec3>& bv, const
 }
 
 // PSM (psm.cpp) with its guard: where its largest texel footprint over the receivers is worse
-// than the focused uniform map's (`uniform`), that map is used and the fallback says so. The method
-// sweep (math/method_sweep.h) measured PSM above 1.5x SSM's footprint on 2.5% of sun and 8% of spot views without it;
-// Stamminger & Drettakis (section 6) name such hard cases. `receivers` null: no guard.
+// than the focused uniform map's (`uniform`), that map is used and the fallback says so. The
+// method sweep (math/method_sweep.h) measured PSM above 1.5x SSM's footprint on 2.5% of sun and
+// 8% of spot views without it; Stamminger & Drettakis (section 6) name such hard cases.
+// `receivers` null: no guard.
 glm::dmat4 guardedPsm(const ViewFrustum& view, const ViewBasis& basis, const ShadowLight& light,
                       const std::vector<glm::dvec3>& bv, const glm::dmat4& uniform,
                       const std::vector<std::vector<ReceiverSample>>* receiverSets, ShadowDiagnostics& diag,

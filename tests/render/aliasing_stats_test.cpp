@@ -86,7 +86,8 @@ TEST_F(AliasingRender, LispsmReducesTheMedianErrorAlongTheGround) {
 // the light), sigma_min from (F - sqrt(F^2 - 4 det^2)) / 2 cancels to 0 in float and the pixel
 // would be shown as unmeasured. Looking down at the ground under a sun 0.003
 // degrees above the horizon (sigma ratio ~2e4), every pixel is inside the map and must be measured
-// (raw G = 1). The cancelling formula leaves 28854 of the 49152 pixels unmeasured with SSM, 30630 with LiSPSM.
+// (raw G = 1). The cancelling formula leaves 28854 of the 49152 pixels
+// unmeasured with SSM, 30630 with LiSPSM.
 TEST_F(AliasingRender, SurfacesAlmostEdgeOnToTheLightAreMeasuredNotGrey) {
     Scene scene = planeBoxScene(glm::normalize(glm::dvec3(1.0, -0.00005, 0.3)));
     Settings s = lookAt({0.5, 6.0, 0.5}, {0.0, 0.0, 0.0});
