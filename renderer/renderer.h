@@ -7,7 +7,7 @@
 //   shadow setup (GL-free math: B, SSM/PSM/LiSPSM matrix)  ->  caster culling against B  ->
 //   shadow pass (depth map; skipped when its key is unchanged)  ->
 //   [shadow-term pass + N blur passes, only when N > 0]  ->  forward pass
-// What a frame skips when it does not need it is switchable in Settings::skip (README).
+// What a frame skips when it does not need it is switchable in Settings::skip (docs/design.md).
 #include "resources/cascade_maps.h"
 #include "culling/instance_culling.h"
 #include "frame/frame_setup.h"
