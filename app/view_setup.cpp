@@ -4,6 +4,7 @@
 #include "image/png_text.h"
 #include "scenes/gltf_loader.h"
 #include "settings/method_choice.h"
+#include "viewer/ground_probe.h"
 
 #include <filesystem>
 #include <fstream>
@@ -27,8 +28,7 @@ std::optional<Scene> loadSceneReporting(const std::string& file, const LoadOptio
 Settings initialSettings(const Scene& scene) {
     Settings settings;
     if (!scene.cameras.empty()) settings.camera = cameraFromScene(scene.cameras.front(), settings.camera);
-    const double size = glm::length(scene.bounds.extent());
-    if (std::isfinite(size) && size > 0.0) settings.camera.moveSpeed = std::max(0.5, size * 0.1);
+    settings.camera.moveSpeed = defaultFlySpeed(scene, settings.camera.position);
     return settings;
 }
 

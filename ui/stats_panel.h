@@ -17,6 +17,7 @@ struct ViewerStatus {
     std::vector<std::string> notices;       // e.g. "shadowMapSize 12345 -> 8192" (clamped values)
     bool collapseStats = false;             // fold the stats window this frame (split compare began)
     std::vector<std::string> compareLines;  // one per split-compare view
+    std::string navigation;                 // fly / walk speed and the keys that change it
 };
 
 void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, const ViewerStatus& status);

@@ -3,8 +3,8 @@
 // OverlayRenderer (renderer/overlays/overlay.h), split compare views and the glTF animations.
 //
 // Controls (also in the "keys and mouse" help of the View state panel): left drag looks, right drag
-// orbits the scene centre, wheel dollies, W/A/S/D/Q/E fly (shift: faster), Home/F frames the scene,
-// R returns to the scene's camera, 1-4 pick SSM / SSM unfocused / PSM / LiSPSM, space plays/pauses,
+// orbits the scene centre, wheel dollies, W/A/S/D/Q/E fly (shift: faster; +/- or the wheel while
+// flying change the speed), G walks on the ground, Home/F frames the scene, R returns to the scene's camera, 1-4 pick SSM / SSM unfocused / PSM / LiSPSM, space plays/pauses,
 // F1 hides the panels, F12 saves a screenshot; dragging or scrolling over the observer inset turns
 // and zooms the observer. File > Open or dropping a file opens a scene (.gltf/.glb), applies a view
 // state (.json) or the settings embedded in a shadowlab screenshot (.png).
@@ -18,6 +18,7 @@
 #include "screen_overlays.h"
 #include "scenes/animation.h"
 #include "settings/method_choice.h"
+#include "viewer/ground_probe.h"
 #include "viewer/viewer_frame.h"
 #include "viewer/viewer_open.h"
 #include "widgets.h"
@@ -69,9 +70,40 @@ bool writeTextFile(const std::string& file, const std::string& text, std::string
     return true;
 }
 
+// Fly speed times 1.25 per step (steps < 0: slower), within the speed slider's range.
+void changeFlySpeed(ViewerState& state, double steps) {
+    CameraSettings& camera = state.settings.camera;
+    camera.moveSpeed = std::clamp(camera.moveSpeed * std::pow(1.25, steps), 0.05, 1000.0);
+    state.status.lastMessage = "fly speed " + ui::formatNumber(camera.moveSpeed, 3) + " m/s";
+}
+
+// Walk mode on (the eye kept at its present height above the ground under it) or off.
+void toggleWalk(ViewerState& state) {
+    CameraController& controller = state.controller;
+    if (controller.walkOn || !state.scene) {
+        controller.walkOn = nullptr;
+        state.status.lastMessage = "flying (G walks)";
+        return;
+    }
+    if (!state.ground) state.ground.emplace(*state.scene);  // indexed once per scene
+    const glm::dvec3 eye = state.settings.camera.position;
+    const std::optional<double> ground = state.ground->below(eye.x, eye.z, eye.y);
+    if (!ground) {
+        state.status.lastMessage = "no ground under the camera to walk on";
+        return;
+    }
+    controller.walkEyeHeight = std::max(0.05, eye.y - *ground);
+    controller.walkOn = &*state.ground;
+    state.status.lastMessage =
+        "walking, the eye " + ui::formatNumber(controller.walkEyeHeight, 3) + " m above the ground (G flies)";
+}
+
 void runAction(ViewerState& state, ViewerAction action, double aspect) {
     if (applyMethodAction(action, state.settings)) return;
     switch (action) {
+        case ViewerAction::FlyFaster: changeFlySpeed(state, 1.0); break;
+        case ViewerAction::FlySlower: changeFlySpeed(state, -1.0); break;
+        case ViewerAction::ToggleWalk: toggleWalk(state); break;
         case ViewerAction::TogglePlay: state.settings.animation.playing = !state.settings.animation.playing; break;
         case ViewerAction::ToggleUi: state.showUi = !state.showUi; break;
         case ViewerAction::Screenshot: state.screenshotRequested = true; break;
@@ -105,7 +137,7 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
     for (const InputEvent& e : events) {
         switch (e.kind) {
             case InputKind::Key: {
-                if (!io.WantCaptureKeyboard || e.action == GLFW_RELEASE) state.fly.onKey(e.code, e.action);
+                if (!io.WantCaptureKeyboard || e.action == GLFW_RELEASE) state.fly.onKey(e.code, e.action, e.mods, e.time);
                 if (e.action != GLFW_PRESS) break;
                 const ViewerAction action = actionForKey(e.code, e.mods);
                 if (!io.WantCaptureKeyboard || actsWhileTyping(action)) runAction(state, action, aspect);
@@ -140,10 +172,9 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
     }
 }
 
-CameraInput cameraInput(ViewerState& state, double dt) {
+CameraInput cameraInput(ViewerState& state) {
     CameraInput in;
-    in.dt = dt;
-    in.move = state.fly.takeMove();
+    in.flight = state.fly.takeFlight(glfwGetTime());
     in.fast = state.fly.fast();
     in.scroll = std::exchange(state.scroll, 0.0);
     const DragDeltas drag = state.drag.takeDeltas();
@@ -226,6 +257,8 @@ void syncGroundPlane(ViewerState& state, Renderer& renderer) {
     } else {
         state.groundPlane = addGroundPlane(*state.scene);
     }
+    state.ground.reset();  // walk mode stands on the plane (or no longer) from now on
+    if (state.controller.walkOn) state.controller.walkOn = &state.ground.emplace(*state.scene);
     renderer.setScene(*state.scene, true);  // a re-upload streams its textures too
     state.texturesTotal = state.texturesPending = state.scene->textures.size();
     state.status.sceneTriangles = state.scene->triangleCount();
@@ -322,10 +355,10 @@ void runViewer(const ViewerOptions& options) {
             framesOwed = kSettleFrames;
 
         const auto now = Clock::now();
-        // Clamped: the first frame after an idle wait must not fly or animate by the wait.
+        // Clamped: the first frame after an idle wait must not animate by the wait (flight is
+        // integrated on the keys' own times, FlyKeys).
         const double dt = std::min(0.25, std::chrono::duration<double>(now - last).count());
         last = now;
-        if (dt > 0.0 && frame > 0) fps = fps == 0.0 ? 1.0 / dt : fps * 0.95 + 0.05 / dt;
 
         if (state.uploadNext) {
             finishSceneLoad(state, *renderer, options.overrides);
@@ -362,7 +395,7 @@ void runViewer(const ViewerOptions& options) {
         const std::vector<Pane> panes = framePanes(state.ab, state.settings);
         const Layout layout =
             layoutFrame(fbWidth, fbHeight, state.showUi && !state.panelCollapsed, state.settings, int(panes.size()), state.enlargedInset);
-        if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state, dt));
+        if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state));
         updateTitle(window.get(), state, windowTitle);
 
         const auto cpuStart = Clock::now();

@@ -119,6 +119,9 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
         return;
     }
     state.scene = std::move(loaded.scene);
+    state.sceneHash = sceneFileHash(file);
+    state.controller.walkOn = nullptr;  // the eye height was measured in the old scene
+    state.ground.reset();
     state.groundPlane.reset();  // the new scene has none yet; syncGroundPlane adds it if asked
     Scene& scene = *state.scene;
     if (initial) {
