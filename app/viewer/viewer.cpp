@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "gl/debug_output.h"
 #include "image/png_text.h"
+#include "notifications.h"
 #include "resources/render_target.h"
 #include "screen_overlays.h"
 #include "scenes/animation.h"
@@ -128,6 +129,13 @@ glm::dvec2 toFramebuffer(GLFWwindow* window, const glm::dvec2& p) {
 // Turns this frame's events into actions, drags and wheel steps, in the order they happened.
 void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow* window, const Layout& layout) {
     const ImGuiIO& io = ImGui::GetIO();  // what ImGui wanted at the end of the last frame
+    // The mouse belongs to ImGui where a panel lies under the cursor at the time of the event (not
+    // where it lay at the end of the last frame), while a widget is being dragged, or a popup is open.
+    auto panelWantsMouse = [&] {
+        const glm::dvec2 p = state.drag.cursor();
+        return ui::panelAt(ImVec2(float(p.x), float(p.y))) || ImGui::IsAnyItemActive() ||
+               ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+    };
     const double aspect = layout.views.empty() ? 1.0 : double(layout.views[0].width) / layout.views[0].height;
     auto insetUnderCursor = [&] {
         const glm::dvec2 p = toFramebuffer(window, state.drag.cursor());
@@ -152,8 +160,9 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
                         insetUnderCursor() == pressed)
                         state.enlargedInset = state.enlargedInset == pressed ? InsetKind::None : pressed;
                 } else if (e.code == GLFW_MOUSE_BUTTON_LEFT || e.code == GLFW_MOUSE_BUTTON_RIGHT) {
-                    state.pressedInset = io.WantCaptureMouse ? InsetKind::None : insetUnderCursor();
-                    const DragTarget target = io.WantCaptureMouse ? DragTarget::None
+                    const bool panel = panelWantsMouse();
+                    state.pressedInset = panel ? InsetKind::None : insetUnderCursor();
+                    const DragTarget target = panel ? DragTarget::None
                                               : overObserver()    ? DragTarget::Observer
                                               : e.code == GLFW_MOUSE_BUTTON_LEFT ? DragTarget::Look
                                                                                  : DragTarget::Orbit;
@@ -162,8 +171,10 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
                 break;
             case InputKind::CursorMove: state.drag.onCursor(e.position); break;
             case InputKind::Scroll:
-                if (io.WantCaptureMouse) break;
-                if (overObserver())
+                if (panelWantsMouse()) break;
+                if (state.fly.anyHeld() || state.drag.target() == DragTarget::Look)
+                    changeFlySpeed(state, e.scroll);  // while flying, the wheel sets the speed
+                else if (overObserver())
                     state.observer.distance = std::clamp(state.observer.distance * std::pow(0.9, e.scroll), 0.3, 5.0);
                 else
                     state.scroll += e.scroll;
@@ -234,8 +245,16 @@ void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string
             else state.status.lastError = error;
         }
     }
-    std::cerr << "shadowlab: " << (state.status.lastError.empty() ? state.status.lastMessage : state.status.lastError)
-              << "\n";
+    std::cerr << "shadowlab: " << (error.empty() ? state.status.lastMessage : error) << "\n";
+}
+
+// The Stats window's line on how the camera moves and how to change it.
+std::string navigationLine(const ViewerState& state) {
+    const std::string speed = ui::formatNumber(state.settings.camera.moveSpeed, 3) + " m/s";
+    if (state.controller.walkOn)
+        return "walking at " + speed + ", eye " + ui::formatNumber(state.controller.walkEyeHeight, 3) +
+               " m above the ground (+/- speed, G flies)";
+    return "flying at " + speed + " (WASD QE; +/- or wheel while flying: speed; G walks)";
 }
 
 void updateTitle(GLFWwindow* window, const ViewerState& state, std::string& windowTitle) {
@@ -348,7 +367,8 @@ void runViewer(const ViewerOptions& options) {
                                 state.texturesPending > 0 ||
                                 renderer->readbackPending();  // the visible-depth result arrives next frame
         if (continuous || framesOwed > 0) glfwPollEvents();
-        else if (state.load) glfwWaitEventsTimeout(0.1);  // the progress bar moves
+        else if (state.load || ui::notificationsFading(state.status))
+            glfwWaitEventsTimeout(0.1);  // the progress bar moves, a message fades
         else glfwWaitEvents();
         std::vector<InputEvent> input = events.input.drain();
         if (!input.empty() || !events.droppedFiles.empty() || std::exchange(events.exposed, false))
@@ -433,7 +453,8 @@ void runViewer(const ViewerOptions& options) {
         else if (state.texturesPending > 0)
             loading = {true, state.status.sceneName, 0.0, false,
                        1.0 - double(state.texturesPending) / double(std::max<std::size_t>(1, state.texturesTotal)), true};
-        ui::drawMessageToast(state.status, loading, 0.0f, float(layout.viewWidth));
+        const float belowNotifications =
+            ui::drawNotifications(state.status, loading, 0.0f, float(layout.viewWidth), glfwGetTime());
         // F12 without panels: the rendered 3D area as it is now, before any ImGui drawing.
         std::optional<RgbaImage> bareShot;
         if (state.screenshotRequested && !state.viewState.screenshotPanels && fbWidth > 0 && fbHeight > 0)
@@ -441,16 +462,20 @@ void runViewer(const ViewerOptions& options) {
         // Captions (method names, inset titles, error numbers) belong to the image: they stay with F1.
         addErrorCaptions(views, layout, toFramebuffer(window.get(), state.drag.cursor()), views.captions);
         ui::drawCaptions(views.captions);
-        if (state.settings.viewMode == ViewMode::AliasingError) ui::drawHeatLegendWindow(float(layout.viewWidth));
+        if (state.settings.viewMode == ViewMode::AliasingError)
+            ui::drawHeatLegendWindow(float(layout.viewWidth), belowNotifications);
         if (state.scene && !layout.views.empty())
             drawMismatchOverlay(state.accuracy, state.settings, float(layout.views[0].x), float(layout.views[0].y),
                                 float(layout.views[0].width), float(layout.views[0].height));
         if (state.showUi) {
             // Split compare began: fold the stats window so it does not cover the left view.
-            state.status.collapseStats = views.paneStats.size() > 1 && std::exchange(state.splitShown, true) == false;
+            // Not in A/B compare: storing A is no reason to hide the figures.
+            state.status.collapseStats = views.paneStats.size() > 1 && !state.ab.active &&
+                                         std::exchange(state.splitShown, true) == false;
             if (views.paneStats.size() <= 1) state.splitShown = false;
             state.status.compareLines = views.compareLines;
-            ui::drawStatsPanel(state.stats, fps, frameCpuMs, state.status);
+            state.status.navigation = navigationLine(state);
+            ui::drawStatsPanel(state.stats, fps, frameCpuMs, state.status, statsArea(layout, belowNotifications));
         }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -464,6 +489,9 @@ void runViewer(const ViewerOptions& options) {
             saveScreenshot(state, bareShot ? *bareShot : readFramebuffer(0, 0, 0, fbWidth, fbHeight),
                            ui::screenshotFileName(state.settings, std::time(nullptr)), true);
         glfwSwapBuffers(window.get());
+        // The rate the viewer draws at: the frame's own time, not counting an idle wait for events.
+        const double frameSeconds = std::chrono::duration<double>(Clock::now() - now).count();
+        if (frameSeconds > 0.0) fps = fps == 0.0 ? 1.0 / frameSeconds : fps * 0.8 + 0.2 / frameSeconds;
         if (!(state.settings == before)) {
             framesOwed = kSettleFrames;
             noteSceneNotices(state);

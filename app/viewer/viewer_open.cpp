@@ -145,7 +145,6 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
     forgetScene(state.accuracy);
     state.status.sceneName = file;
     state.status.sceneTriangles = scene.triangleCount();
-    state.status.lastMessage = "opened " + file;
     state.animation = animationInfo(scene);
     state.controller.pivot = scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
     state.file.remember(file);

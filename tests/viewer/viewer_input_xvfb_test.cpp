@@ -77,6 +77,20 @@ TEST(ViewerInputUnderXvfb, ADragIsMeasuredFromThePress) {
     EXPECT_NEAR(s.camera.pitchDeg, -10.0, 1e-6);
 }
 
+TEST(ViewerInputUnderXvfb, TheWheelOverThePanelScrollsThePanelNotTheCamera) {
+    // The pointer rests on the picture for a frame, then moves onto the control window (x >= 590
+    // of 960) and the wheel turns in the same instant: last frame's io.WantCaptureMouse still
+    // said "not ImGui's" and the camera dollied ~7 m.
+    const std::string view = R"({"animation": {"playing": false, "time": 0.0},
+        "camera": {"position": [0.0, 3.0, 12.0], "yawDeg": -90.0, "pitchDeg": -10.0}})";
+    const Settings panel =
+        drive("wheel-panel", view, "move:300:300 sleep:400 move:800:300 press:4 release:4 press:4 release:4");
+    EXPECT_NEAR(glm::distance(panel.camera.position, glm::dvec3(0.0, 3.0, 12.0)), 0.0, 1e-9);
+    // Over the picture the same wheel turns dolly the camera (the check above can fail).
+    const Settings picture = drive("wheel-picture", view, "move:300:300 sleep:400 press:4 release:4 press:4 release:4");
+    EXPECT_GT(glm::distance(picture.camera.position, glm::dvec3(0.0, 3.0, 12.0)), 0.1);
+}
+
 TEST(ViewerInputUnderXvfb, ABadSceneOnTheCommandLineOpensTheDefaultSceneWithTheError) {
     const fs::path dir = fs::path(VIEWER_TEST_DIR);
     fs::create_directories(dir);
