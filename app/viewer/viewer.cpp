@@ -230,18 +230,26 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
 
 // A screenshot carries the settings it was rendered with in a PNG tEXt chunk (renderer/image/png_text.h)
 // and, when `jsonBeside`, as FILE.json next to it: dropping it on the viewer or `shadowlab render
-// --view shot.png` reproduces the image.
-void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string& file, bool jsonBeside) {
+// --view shot.png` reproduces the image. The PNG also names the scene and the size of the 3D view (ShotOrigin, app/view_setup.h), so
+// `render --view shot.png` needs neither.
+void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string& file, bool jsonBeside,
+                    const InsetRect& view) {
     std::string error;
-    state.status.lastError.clear();
     const std::string json = toJsonText(state.settings);
-    if (!writePng(shot, file, error) || !addPngTextToFile(file, kSettingsPngKeyword, json, error)) {
+    std::error_code ec;
+    const ShotOrigin origin{view.width, view.height, state.status.sceneName,
+                            std::filesystem::absolute(state.status.sceneName, ec).string(), state.sceneHash};
+    if (!writePng(shot, file, error) || !addPngTextToFile(file, kSettingsPngKeyword, json, error) ||
+        !writeShotOrigin(file, origin, error)) {
         state.status.lastError = error;
     } else {
-        state.status.lastMessage = "saved " + file + " (settings embedded)";
+        const std::filesystem::path path = std::filesystem::absolute(file, ec);
+        state.status.lastMessage = "saved " + path.filename().string() + " (" + std::to_string(shot.width) + "x" +
+                                   std::to_string(shot.height) + ") in " + path.parent_path().string();
         if (jsonBeside) {
             const std::string beside = std::filesystem::path(file).replace_extension(".json").string();
-            if (writeTextFile(beside, json, error)) state.status.lastMessage += " and " + beside;
+            if (writeTextFile(beside, json, error))
+                state.status.lastMessage += ", settings also in " + std::filesystem::path(beside).filename().string();
             else state.status.lastError = error;
         }
     }
@@ -480,14 +488,15 @@ void runViewer(const ViewerOptions& options) {
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
+        const InsetRect shotView = layout.views.empty() ? InsetRect{} : layout.views[0];
         // --frames counts frames of a scene (or of the error, when none could be loaded).
         const bool counting = options.frames > 0 && !state.load && !state.uploadNext;
         const bool lastFrame = counting && frame + 1 >= options.frames;
         if (lastFrame && !options.screenshot.empty())  // --screenshot: the window as shown, panels and all
-            saveScreenshot(state, readFramebuffer(0, 0, 0, fbWidth, fbHeight), options.screenshot, false);
+            saveScreenshot(state, readFramebuffer(0, 0, 0, fbWidth, fbHeight), options.screenshot, false, shotView);
         if (std::exchange(state.screenshotRequested, false))
             saveScreenshot(state, bareShot ? *bareShot : readFramebuffer(0, 0, 0, fbWidth, fbHeight),
-                           ui::screenshotFileName(state.settings, std::time(nullptr)), true);
+                           ui::screenshotFileName(state.settings, std::time(nullptr)), true, shotView);
         glfwSwapBuffers(window.get());
         // The rate the viewer draws at: the frame's own time, not counting an idle wait for events.
         const double frameSeconds = std::chrono::duration<double>(Clock::now() - now).count();

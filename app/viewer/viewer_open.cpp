@@ -25,6 +25,15 @@ ui::AnimationInfo animationInfo(const Scene& scene) {
 
 // Applies a view state (JSON, or the settings embedded in a screenshot) as a whole or not at all.
 void applyViewFile(ViewerState& state, const std::string& file) {
+    // A screenshot of another scene would put the camera somewhere meaningless here.
+    if (const std::optional<ShotOrigin> origin = readShotOrigin(file); origin && state.scene) {
+        const std::string mismatch = sceneMismatch(file, *origin, state.status.sceneName, state.sceneHash);
+        if (!mismatch.empty()) {
+            state.status.lastError = mismatch;
+            std::cerr << "shadowlab: " << mismatch << "\n";
+            return;
+        }
+    }
     Settings loaded = state.settings;
     std::string error;
     if (!readViewFile(file, loaded, error)) {

@@ -7,9 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -23,6 +25,22 @@ std::string quoted(const fs::path& p) {
     std::string q = "'";
     q.append(p.string()).append("'");
     return q;
+}
+
+// The size and scene a viewer screenshot names (app/view_setup.h writes them).
+struct ShotOrigin {
+    int width = 0, height = 0;
+    std::string scene;
+};
+std::optional<ShotOrigin> readShotOriginForTest(const fs::path& png) {
+    std::string error;
+    const auto scene = readPngTextFromFile(png, "shadowlab-scene", error);
+    const auto size = readPngTextFromFile(png, "shadowlab-view-size", error);
+    if (!scene || !size) return std::nullopt;
+    ShotOrigin origin;
+    origin.scene = *scene;
+    if (std::sscanf(size->c_str(), "%dx%d", &origin.width, &origin.height) != 2) return std::nullopt;
+    return origin;
 }
 
 std::string readFile(const fs::path& file) {
@@ -146,6 +164,42 @@ TEST(ViewerInputUnderXvfb, F12SavesTheRenderedImageWithItsSettingsAndRenderRepro
             differing += std::abs(a.r - b.r) > 6 || std::abs(a.g - b.g) > 6 || std::abs(a.b - b.b) > 6;
         }
     EXPECT_LT(differing, image.width * image.height / 100);
+
+    // The shot names its scene and its size: `render --view shot.png` alone reproduces it, from
+    // another directory, to a mean difference under half a grey level.
+    const std::optional<ShotOrigin> origin = readShotOriginForTest(shot);
+    ASSERT_TRUE(origin);
+    EXPECT_EQ(origin->width, 590);
+    EXPECT_EQ(origin->height, 540);
+    const fs::path alone = dir / "f12-alone.png", aloneLog = dir / "f12-alone.log";
+    const std::string bare = "cd / && " + quoted(SHADOWLAB_EXE) + " render --view " + quoted(shot) + " --out " +
+                             quoted(alone) + " > " + quoted(aloneLog) + " 2>&1";
+    ASSERT_EQ(std::system(bare.c_str()), 0) << readFile(aloneLog);
+    RgbaImage reproduced;
+    ASSERT_TRUE(readPng(alone, reproduced, error)) << error;
+    ASSERT_EQ(reproduced.width, image.width);
+    ASSERT_EQ(reproduced.height, image.height);
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) sum += std::abs(int(image.at(x, y)[c]) - int(reproduced.at(x, y)[c]));
+    const double mean = sum / (3.0 * image.width * image.height);
+    std::cout << "F12 shot re-rendered from the PNG alone: mean abs difference " << mean << " of 255\n";
+    EXPECT_LT(mean, 0.5);
+
+    // A shot whose scene changed since is refused, not rendered with a meaningless camera.
+    std::vector<unsigned char> bytes;
+    {
+        const std::string text = readFile(shot);
+        bytes.assign(text.begin(), text.end());
+    }
+    ASSERT_TRUE(addPngText(bytes, "shadowlab-scene-hash", "fnv1a64:0000000000000000", error)) << error;
+    const fs::path stale = dir / "f12-stale.png", staleLog = dir / "f12-stale.log";
+    std::ofstream(stale, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    const std::string refused = quoted(SHADOWLAB_EXE) + " render --view " + quoted(stale) + " --out " +
+                                quoted(dir / "f12-stale-out.png") + " > " + quoted(staleLog) + " 2>&1";
+    EXPECT_NE(std::system(refused.c_str()), 0);
+    EXPECT_NE(readFile(staleLog).find("is not the scene"), std::string::npos) << readFile(staleLog);
 }
 
 TEST(ViewerInputUnderXvfb, AbDifferenceOfIdenticalSettingsIsBlackAndRenderCompareSaysZero) {
