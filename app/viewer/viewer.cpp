@@ -201,6 +201,7 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     // The z_f the auto mode picked last frame (thesis 9.2.5: the farthest visible depth from
     // the renderer's depth pre-pass), for the LiSPSM panel's slider.
     static const Scene kNoScene{};
+    state.accuracy.view.stale = state.accuracy.view.measured && !stillMeasured(state.accuracy, state.settings);
     ui::ControlContext ctx{&state.stats,    state.scene ? &*state.scene : &kNoScene, state.animation,
                            state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file,
                            &state.accuracy.view, &state.accuracy.toggles};
