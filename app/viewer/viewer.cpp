@@ -261,9 +261,8 @@ void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string
 std::string navigationLine(const ViewerState& state) {
     const std::string speed = ui::formatNumber(state.settings.camera.moveSpeed, 3) + " m/s";
     if (state.controller.walkOn)
-        return "walking at " + speed + ", eye " + ui::formatNumber(state.controller.walkEyeHeight, 3) +
-               " m above the ground (+/- speed, G flies)";
-    return "flying at " + speed + " (WASD QE; +/- or wheel while flying: speed; G walks)";
+        return "walk " + speed + ", eye " + ui::formatNumber(state.controller.walkEyeHeight, 3) + " m: +/-; G flies";
+    return "fly " + speed + ": +/- or wheel while flying; G walks";
 }
 
 void updateTitle(GLFWwindow* window, const ViewerState& state, std::string& windowTitle) {

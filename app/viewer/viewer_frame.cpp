@@ -49,7 +49,11 @@ ui::ScreenArea statsArea(const Layout& layout, float top) {
     const ui::ScreenArea above{0.0f, y0, float(layout.viewWidth), std::max(y0, insetTop)};
     const ui::ScreenArea beside{std::min(insetRight, float(layout.viewWidth)), y0, float(layout.viewWidth),
                                 std::max(y0, float(layout.fbHeight) - kGap)};
-    auto area = [](const ui::ScreenArea& a) { return (a.x1 - a.x0) * (a.y1 - a.y0); };
+    // Above the insets while that holds the window's first lines (it does not move when an inset
+    // is switched on); beside them under an enlarged inset, which reaches the top.
+    constexpr float kEnoughHeight = 160.0f;
+    if (above.y1 - above.y0 >= kEnoughHeight) return above;
+    auto area = [](const ui::ScreenArea& r) { return (r.x1 - r.x0) * (r.y1 - r.y0); };
     return area(beside) > area(above) ? beside : above;
 }
 

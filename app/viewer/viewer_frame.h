@@ -37,7 +37,8 @@ Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& setti
 
 // Where the Stats window may go: the part of the 3D area below `top` (the notification area's
 // bottom, at least 36 px, under the split views' captions) that no inset or inset title
-// covers: above the inset row, or right of the insets when that is larger (an enlarged inset).
+// covers: above the inset row while that is at least 160 px tall, else right of the insets (an
+// enlarged inset reaches the top).
 ui::ScreenArea statsArea(const Layout& layout, float top);
 
 // One view of the frame: the settings it is rendered with and its caption ("" for none).

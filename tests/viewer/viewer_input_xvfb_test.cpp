@@ -98,14 +98,17 @@ TEST(ViewerInputUnderXvfb, ADragIsMeasuredFromThePress) {
 TEST(ViewerInputUnderXvfb, TheWheelOverThePanelScrollsThePanelNotTheCamera) {
     // The pointer rests on the picture for a frame, then moves onto the control window (x >= 590
     // of 960) and the wheel turns in the same instant: last frame's io.WantCaptureMouse still
-    // said "not ImGui's" and the camera dollied ~7 m.
+    // said "not ImGui's" and the camera dollied ~7 m. (450, 200): right of the Stats window, above
+    // the insets. The real pointer moves (warp), as ImGui asks the X server where it is.
     const std::string view = R"({"animation": {"playing": false, "time": 0.0},
         "camera": {"position": [0.0, 3.0, 12.0], "yawDeg": -90.0, "pitchDeg": -10.0}})";
-    const Settings panel =
-        drive("wheel-panel", view, "move:300:300 sleep:400 move:800:300 press:4 release:4 press:4 release:4");
+    const Settings panel = drive("wheel-panel", view,
+                                 "warp:450:200 sleep:1500 warp:800:200 press:4 release:4 press:4 release:4 sleep:500");
     EXPECT_NEAR(glm::distance(panel.camera.position, glm::dvec3(0.0, 3.0, 12.0)), 0.0, 1e-9);
-    // Over the picture the same wheel turns dolly the camera (the check above can fail).
-    const Settings picture = drive("wheel-picture", view, "move:300:300 sleep:400 press:4 release:4 press:4 release:4");
+    // Over the picture the same wheel turns dolly the camera (the check above can fail; the
+    // viewer before the per-event check dollied 2.4 m in the panel case).
+    const Settings picture =
+        drive("wheel-picture", view, "warp:450:200 sleep:1500 press:4 release:4 press:4 release:4 sleep:500");
     EXPECT_GT(glm::distance(picture.camera.position, glm::dvec3(0.0, 3.0, 12.0)), 0.1);
 }
 
@@ -200,6 +203,11 @@ TEST(ViewerInputUnderXvfb, F12SavesTheRenderedImageWithItsSettingsAndRenderRepro
                                 quoted(dir / "f12-stale-out.png") + " > " + quoted(staleLog) + " 2>&1";
     EXPECT_NE(std::system(refused.c_str()), 0);
     EXPECT_NE(readFile(staleLog).find("is not the scene"), std::string::npos) << readFile(staleLog);
+    // No scene and a view that names none: a clear message, not a crash or a default.
+    const std::string noScene = quoted(SHADOWLAB_EXE) + " render --view " + quoted(dir / "f12.json") + " --out " +
+                                quoted(dir / "f12-none.png") + " > " + quoted(staleLog) + " 2>&1";
+    EXPECT_NE(std::system(noScene.c_str()), 0);
+    EXPECT_NE(readFile(staleLog).find("no SCENE given"), std::string::npos) << readFile(staleLog);
 }
 
 TEST(ViewerInputUnderXvfb, AbDifferenceOfIdenticalSettingsIsBlackAndRenderCompareSaysZero) {
