@@ -4,11 +4,15 @@
 #include "image/png_text.h"
 #include "scenes/gltf_loader.h"
 #include "settings/method_choice.h"
+#include "viewer/ground_probe.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 namespace shadowlab::app {
 
@@ -27,8 +31,7 @@ std::optional<Scene> loadSceneReporting(const std::string& file, const LoadOptio
 Settings initialSettings(const Scene& scene) {
     Settings settings;
     if (!scene.cameras.empty()) settings.camera = cameraFromScene(scene.cameras.front(), settings.camera);
-    const double size = glm::length(scene.bounds.extent());
-    if (std::isfinite(size) && size > 0.0) settings.camera.moveSpeed = std::max(0.5, size * 0.1);
+    settings.camera.moveSpeed = defaultFlySpeed(scene, settings.camera.position);
     return settings;
 }
 
@@ -117,6 +120,65 @@ bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std:
         if (!setByKey(settings, s, error)) return false;
     for (const std::string& change : sanitize(settings)) std::cerr << "shadowlab: adjusted " << change << "\n";
     return true;
+}
+
+std::string sceneFileHash(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return "";
+    std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64 offset basis
+    std::vector<char> buffer(1 << 16);
+    while (in) {
+        in.read(buffer.data(), std::streamsize(buffer.size()));
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            hash ^= std::uint8_t(buffer[std::size_t(i)]);
+            hash *= 1099511628211ull;
+        }
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+bool writeShotOrigin(const std::string& png, const ShotOrigin& origin, std::string& error) {
+    const std::string size = std::to_string(origin.width) + "x" + std::to_string(origin.height);
+    return addPngTextToFile(png, kViewSizePngKeyword, size, error) &&
+           addPngTextToFile(png, kScenePngKeyword, origin.scene, error) &&
+           addPngTextToFile(png, kSceneAbsolutePngKeyword, origin.sceneAbsolute, error) &&
+           addPngTextToFile(png, kSceneHashPngKeyword, origin.sceneHash, error);
+}
+
+std::optional<ShotOrigin> readShotOrigin(const std::string& png) {
+    std::string error;
+    const auto scene = readPngTextFromFile(png, kScenePngKeyword, error);
+    if (!scene) return std::nullopt;
+    ShotOrigin origin;
+    origin.scene = *scene;
+    origin.sceneAbsolute = readPngTextFromFile(png, kSceneAbsolutePngKeyword, error).value_or("");
+    origin.sceneHash = readPngTextFromFile(png, kSceneHashPngKeyword, error).value_or("");
+    const std::string size = readPngTextFromFile(png, kViewSizePngKeyword, error).value_or("");
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(size);
+    if (in >> w >> x >> h && x == 'x' && w > 0 && h > 0) {
+        origin.width = w;
+        origin.height = h;
+    }
+    return origin;
+}
+
+std::string shotSceneFile(const ShotOrigin& origin) {
+    std::error_code ec;
+    for (const std::string& file : {origin.scene, origin.sceneAbsolute})
+        if (!file.empty() && std::filesystem::is_regular_file(file, ec)) return file;
+    return "";
+}
+
+std::string sceneMismatch(const std::string& shot, const ShotOrigin& origin, const std::string& openScene,
+                          const std::string& openHash) {
+    if (origin.sceneHash.empty() || origin.sceneHash == openHash) return "";
+    return shot + " was taken in " + origin.scene + ", not in the open scene " + openScene +
+           " (their contents differ): its camera would be meaningless here. Open " + origin.scene +
+           " first, then the screenshot.";
 }
 
 }  // namespace shadowlab::app

@@ -13,6 +13,17 @@ Settings settingsForA(const AbCompare& ab, const Settings& current) {
     return a;
 }
 
+std::vector<std::string> differingSettings(const Settings& a, const Settings& b) {
+    const std::vector<std::string> ka = settingKeys(a), kb = settingKeys(b);  // the same keys, in one order
+    std::vector<std::string> lines;
+    for (std::size_t i = 0; i < ka.size() && i < kb.size(); ++i) {
+        if (ka[i] == kb[i]) continue;
+        const std::size_t eq = ka[i].find('=');
+        lines.push_back(ka[i].substr(0, eq) + ": " + ka[i].substr(eq + 1) + " -> " + kb[i].substr(kb[i].find('=') + 1));
+    }
+    return lines;
+}
+
 bool drawAbPanel(AbCompare& ab, const Settings& current) {
     bool changed = false;
     if (ImGui::Button("store as A")) {
@@ -47,8 +58,18 @@ bool drawAbPanel(AbCompare& ab, const Settings& current) {
     changed |= checkbox("same camera", ab.sameCamera,
                         "Render A with the current camera, so moving around compares the same view. Off: A keeps the "
                         "camera it was stored with.");
-    const bool differs = !(settingsForA(ab, current) == current);
-    ImGui::TextDisabled(differs ? "A and B differ in their settings" : "A and B have the same settings");
+    const std::vector<std::string> differences = differingSettings(settingsForA(ab, current), current);
+    if (differences.empty()) {
+        ImGui::TextDisabled("A and B have the same settings");
+        return changed;
+    }
+    ImGui::TextDisabled("A and B differ in (A -> B):");
+    constexpr std::size_t kShown = 6;
+    for (std::size_t i = 0; i < differences.size() && i < kShown; ++i) {
+        ImGui::BulletText("%s", differences[i].c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", differences[i].c_str());  // the panel may cut it
+    }
+    if (differences.size() > kShown) ImGui::TextDisabled("and %zu more", differences.size() - kShown);
     return changed;
 }
 

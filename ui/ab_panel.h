@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shadowlab::ui {
 
@@ -22,6 +23,9 @@ struct AbCompare {
 
 // The settings A is rendered with this frame.
 Settings settingsForA(const AbCompare& ab, const Settings& current);
+
+// "key: A value -> B value" for each setting A and B differ in (settings keys, as --set takes them).
+std::vector<std::string> differingSettings(const Settings& a, const Settings& b);
 
 // Returns true when the compare state changed (the viewer redraws).
 bool drawAbPanel(AbCompare& ab, const Settings& current);

@@ -22,6 +22,43 @@ ImU32 methodColour(ShadowMethod m, int alpha = 255) {
     }
 }
 
+// A shape per method (circle SSM, square PSM, triangle LiSPSM, cross SSM unfocused).
+void drawMarker(ImDrawList* draw, const ImVec2& p, ShadowMethod m, ImU32 colour) {
+    constexpr float r = 3.5f;
+    switch (m) {
+        case ShadowMethod::Psm: draw->AddRect(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), colour, 0.0f, 0, 1.5f); break;
+        case ShadowMethod::Lispsm:
+            draw->AddTriangle(ImVec2(p.x, p.y - r - 1.0f), ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y + r), colour, 1.5f);
+            break;
+        case ShadowMethod::SsmUnfocused:
+            draw->AddLine(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), colour, 1.5f);
+            draw->AddLine(ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y - r), colour, 1.5f);
+            break;
+        default: draw->AddCircle(p, r, colour, 0, 1.5f); break;
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> coincidingCurves(const std::vector<AccuracyCurve>& curves) {
+    std::vector<std::string> notes;
+    for (std::size_t i = 0; i < curves.size(); ++i)
+        for (std::size_t j = i + 1; j < curves.size(); ++j) {
+            const AccuracyCurve &a = curves[i], &b = curves[j];
+            if (a.theory || b.theory || a.z.empty() || a.z != b.z || a.footprint.size() != b.footprint.size()) continue;
+            bool same = true;
+            for (std::size_t k = 0; k < a.footprint.size() && same; ++k)
+                same = std::abs(a.footprint[k] - b.footprint[k]) <= 1e-3f * std::max(a.footprint[k], b.footprint[k]);
+            if (same)
+                notes.push_back(std::string(methodName(b.method)) + " = " + methodName(a.method) +
+                                " here: one curve under the other (" + methodName(b.method) + " fell back to " +
+                                methodName(a.method) + " or warps nothing in this view)");
+        }
+    return notes;
+}
+
+namespace {
+
 // Footprint against eye depth, log-log, with ImDrawList lines (measured: thick, theory: thin).
 void drawDepthPlot(const std::vector<AccuracyCurve>& curves) {
     float zLo = INFINITY, zHi = 0.0f, fLo = INFINITY, fHi = 0.0f;
@@ -61,22 +98,36 @@ void drawDepthPlot(const std::vector<AccuracyCurve>& curves) {
         std::vector<ImVec2> points;
         for (std::size_t i = 0; i < c.z.size() && i < c.footprint.size(); ++i)
             if (c.z[i] > 0.0f && c.footprint[i] > 0.0f) points.push_back(at(c.z[i], c.footprint[i]));
-        if (points.size() >= 2)
-            draw->AddPolyline(points.data(), int(points.size()), methodColour(c.method, c.theory ? 150 : 255), 0,
-                              c.theory ? 1.0f : 2.5f);
+        const ImU32 colour = methodColour(c.method, c.theory ? 150 : 255);
+        if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), colour, 0, c.theory ? 1.0f : 2.5f);
+        // Measured curves carry their method's marker, so one hidden under another still shows.
+        if (!c.theory)
+            for (std::size_t i = 0; i < points.size(); i += 3) drawMarker(draw, points[i], c.method, colour);
     }
     char range[64];
     std::snprintf(range, sizeof range, "z %.3g .. %.3g m (log)", zLo, zHi);
     draw->AddText(ImVec2(origin.x + 6.0f, origin.y + size.y - 16.0f), IM_COL32(160, 160, 160, 255), range);
     ImGui::Dummy(size);
     for (const AccuracyCurve& c : curves) {
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(c.method, c.theory ? 150 : 255)), "%s %s",
-                           c.theory ? "--" : "==", c.label.c_str());
+        const ImU32 colour = methodColour(c.method, c.theory ? 150 : 255);
+        if (c.theory) {
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colour), "--  %s", c.label.c_str());
+            continue;
+        }
+        const ImVec2 p = ImGui::GetCursorScreenPos();
+        drawMarker(ImGui::GetWindowDrawList(), ImVec2(p.x + 8.0f, p.y + 0.5f * ImGui::GetTextLineHeight()), c.method,
+                   colour);
+        ImGui::Dummy(ImVec2(18.0f, ImGui::GetTextLineHeight()));
+        ImGui::SameLine();
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colour), "%s", c.label.c_str());
     }
+    for (const std::string& note : coincidingCurves(curves)) wrappedDisabledText(note.c_str());
 }
 
 void drawFigures(const std::vector<AccuracyFigures>& methods) {
-    if (!ImGui::BeginTable("accuracy figures", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
+    ImGui::TextDisabled("lower is better in every row; the best per row is highlighted");
+    const int columns = 1 + int(std::min<std::size_t>(methods.size(), 4));
+    if (!ImGui::BeginTable("accuracy figures", columns, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
     ImGui::TableSetupColumn("");
     for (const AccuracyFigures& m : methods) ImGui::TableSetupColumn(m.name.empty() ? methodName(m.method) : m.name.c_str());
     ImGui::TableHeadersRow();
@@ -85,8 +136,13 @@ void drawFigures(const std::vector<AccuracyFigures>& methods) {
         ImGui::TableSetColumnIndex(0);
         ImGui::TextUnformatted(name);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
-        for (std::size_t i = 0; i < methods.size() && i < 3; ++i) {
+        const std::size_t shown = std::min<std::size_t>(methods.size(), 4);
+        double best = INFINITY;
+        for (std::size_t i = 0; i < shown; ++i)
+            if (std::isfinite(double(value(methods[i])))) best = std::min(best, double(value(methods[i])));
+        for (std::size_t i = 0; i < shown; ++i) {
             ImGui::TableSetColumnIndex(int(i) + 1);
+            if (double(value(methods[i])) == best) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(40, 110, 50, 160));
             ImGui::Text(format, value(methods[i]));
         }
     };
@@ -129,7 +185,17 @@ void drawHeatLegend() {
                             ImGui::ColorConvertFloat4ToU32(c));
     }
     ImGui::Dummy(ImVec2(width, height));
-    ImGui::TextUnformatted("1/16       1/4        1         4        16+");
+    // Each label under its own point of the bar (the first left-aligned, the last right-aligned),
+    // so none is pushed out of a narrow window.
+    const char* labels[] = {"1/16", "1/4", "1", "4", "16+"};
+    const ImVec2 row = ImGui::GetCursorScreenPos();
+    for (int i = 0; i < 5; ++i) {
+        const float w = ImGui::CalcTextSize(labels[i]).x;
+        draw->AddText(ImVec2(row.x + (width - w) * float(i) / 4.0f, row.y), ImGui::GetColorU32(ImGuiCol_Text),
+                      labels[i]);
+    }
+    ImGui::Dummy(ImVec2(width, ImGui::GetTextLineHeight()));
+    ImGui::TextWrapped("green: 1 texel per pixel; red: undersampled; blue: texels wasted");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Screen pixels per shadow-map texel. Green: one texel per pixel. Red: a texel spans many "
                           "pixels (undersampled, jagged edges). Blue: texels wasted where no pixel needs them.");
@@ -146,15 +212,23 @@ AccuracyRequest drawAccuracyPanel(const AccuracyView& view, AccuracyToggles& tog
     ImGui::TextUnformatted("heat map legend (view mode: aliasing error)");
     drawHeatLegend();
     if (!view.measured) return request;
+    if (view.stale) {
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "settings changed - measure again");
+        ImGui::BeginDisabled();  // greyed: these figures are of the settings measured before
+    }
     drawFigures(view.methods);
     ImGui::TextUnformatted("footprint (bisector normal) against eye depth");
     drawDepthPlot(view.curves);
     if (!view.histogram.empty()) {
         char overlay[64];
         std::snprintf(overlay, sizeof overlay, "log2 footprint %.0f .. %.0f", view.histogramLog2Low, view.histogramLog2High);
+        ImGui::TextUnformatted(("histogram of " + (view.histogramOf.empty() ? std::string("the shown method")
+                                                                             : view.histogramOf) +
+                                ": pixel share per footprint").c_str());
         ImGui::PlotHistogram("##histogram", view.histogram.data(), int(view.histogram.size()), 0, overlay, 0.0f, FLT_MAX,
                              ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
     }
+    if (view.stale) ImGui::EndDisabled();
     if (view.mismatchTexture != 0 && view.mismatchWidth > 0) {
         checkbox("mismatch view", toggles.overlayMismatches,
                  "Colour the 3D view by the comparison with the ground truth (red false shadow, blue false light, "

@@ -36,9 +36,11 @@ struct AccuracyView {
     std::vector<AccuracyFigures> methods;
     std::vector<AccuracyCurve> curves;  // measured (bisector normal) per method, then the closed forms
     std::vector<float> histogram;       // current method: pixel share per bin of log2(footprint)
+    std::string histogramOf;            // that method's name
     float histogramLog2Low = -4.0f, histogramLog2High = 8.0f;
     std::uintptr_t mismatchTexture = 0;  // GL texture name of the mismatch picture (0: none)
     int mismatchWidth = 0, mismatchHeight = 0;
+    bool stale = false;  // the settings changed since: the figures are greyed until measured again
 };
 
 struct AccuracyToggles {
@@ -46,6 +48,10 @@ struct AccuracyToggles {
     bool overlayMismatches = false;  // the mismatch view: colours over the 3D view while it is the measured one
 };
 AccuracyRequest drawAccuracyPanel(const AccuracyView& view, AccuracyToggles& toggles);
+
+// A note per pair of measured curves that lie on each other (PSM falling back to SSM draws the
+// same curve), naming both: the one drawn last hides the other.
+std::vector<std::string> coincidingCurves(const std::vector<AccuracyCurve>& curves);
 
 // Colour bar of the aliasing heat map (shaders/aliasing_error.glsl): pixels per texel, log scale.
 void drawHeatLegend();

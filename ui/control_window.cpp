@@ -12,12 +12,15 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace shadowlab::ui {
 
 namespace {
-// Wide enough that the method names and the camera preset buttons are not cut.
-constexpr float kControlWidth = 370.0f;
+// Wide enough that the method names and the camera preset buttons are not cut; the left edge
+// drags it wider (up to 70% of the window), for long file names and messages.
+constexpr float kControlWidth = 370.0f, kMinControlWidth = 300.0f, kMaxControlShare = 0.7f;
+float controlWidth = kControlWidth;  // as the user resized it
 }  // namespace
 
 ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
@@ -31,9 +34,10 @@ ViewStateRequests drawViewStatePanel(ViewStateUi& ui) {
     ImGui::SameLine();
     r.screenshot = ImGui::Button("screenshot (F12)");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png in the working directory: the rendered image with "
-                          "its settings embedded (and beside it as .json). Drop it on the viewer or pass it to "
-                          "`shadowlab render --view` to reproduce it.");
+        ImGui::SetTooltip("Saves shadowlab-<method>-<time>.png in the working directory (the message at the top "
+                          "says where): the rendered image with its settings, its size and its scene embedded (the "
+                          "settings also beside it as .json). Drop it on the viewer, or `shadowlab render --view "
+                          "shot.png --out again.png` reproduces it.");
     ImGui::SameLine();
     ImGui::Checkbox("with panels", &ui.screenshotPanels);
     if (ImGui::TreeNode("keys and mouse")) {
@@ -47,7 +51,9 @@ const char* const kKeysHelp =
     "left drag: look\n"
     "right drag: orbit the scene centre\n"
     "wheel: dolly towards the scene centre\n"
-    "W A S D Q E: fly (shift: 4x)\n"
+    "W A S D Q E: fly (shift: 4x); a tap: 0.1 s\n"
+    "+ / -, or the wheel while flying: fly speed\n"
+    "G: walk on the ground / fly\n"
     "Home / F: frame the scene\n"
     "R: back to the scene's camera\n"
     "1 2 3 4: SSM, SSM unfocused, PSM, LiSPSM\n"
@@ -95,20 +101,25 @@ std::vector<FlowItem> flowLayout(const std::vector<std::string>& labels, float l
     return items;
 }
 
-float controlWindowWidth() { return kControlWidth; }
+float controlWindowWidth() { return controlWidth; }
 
 ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float width, float height) {
     ControlResult result;
-    ImGui::SetNextWindowPos(ImVec2(width - kControlWidth, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(kControlWidth, height), ImGuiCond_Always);
+    const float maxWidth = std::max(kMinControlWidth, width * kMaxControlShare);
+    const float shown = std::clamp(controlWidth, kMinControlWidth, maxWidth);
+    // Anchored at the right edge and as tall as the window; only the width follows a drag of the
+    // left edge (read back below, applied to the layout from the next frame).
+    ImGui::SetNextWindowPos(ImVec2(width - shown, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(shown, height), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kMinControlWidth, height), ImVec2(maxWidth, height));
     // Collapsible (the title bar's arrow): folded, the 3D area takes the window's full width.
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove;
     if (!ImGui::Begin("shadowlab controls", nullptr, flags)) {
         result.collapsed = ImGui::IsWindowCollapsed();
         ImGui::End();
         return result;
     }
-    ImGui::PushItemWidth(kControlWidth * 0.55f);
+    ImGui::PushItemWidth(shown * 0.55f);
     static const FrameStats kNoStats{};
     const FrameStats& stats = ctx.stats ? *ctx.stats : kNoStats;
     static const Scene kNoScene{};
@@ -141,6 +152,7 @@ ControlResult drawControlWindow(Settings& s, const ControlContext& ctx, float wi
         result.requests = drawViewStatePanel(ctx.viewState ? *ctx.viewState : localViewState);
     if (result.requests.load) result.openFile = (ctx.viewState ? *ctx.viewState : localViewState).file;
     ImGui::PopItemWidth();
+    if (std::abs(ImGui::GetWindowWidth() - shown) > 0.5f) controlWidth = ImGui::GetWindowWidth();  // dragged
     ImGui::End();
     return result;
 }

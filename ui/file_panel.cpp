@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 namespace shadowlab::ui {
 
@@ -16,6 +18,54 @@ void FileUi::remember(const std::string& file) {
     recent.push_front(file);
     while (recent.size() > kMaxRecent) recent.pop_back();
 }
+
+std::vector<BrowseEntry> browseEntries(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::vector<BrowseEntry> entries;
+    std::error_code ec;
+    fs::directory_iterator it(dir.empty() ? fs::path(".") : fs::path(dir), fs::directory_options::skip_permission_denied, ec);
+    constexpr std::size_t kMaxEntries = 2000;  // a huge folder is listed in part, not frozen on
+    for (; !ec && it != fs::directory_iterator() && entries.size() < kMaxEntries; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.empty() || name[0] == '.') continue;
+        std::error_code typeError;
+        if (it->is_directory(typeError)) {
+            entries.push_back({name, true});
+            continue;
+        }
+        std::string ext = it->path().extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (ext == ".gltf" || ext == ".glb" || ext == ".json" || ext == ".png") entries.push_back({name, false});
+    }
+    std::sort(entries.begin(), entries.end(), [](const BrowseEntry& a, const BrowseEntry& b) {
+        return a.folder != b.folder ? a.folder : a.name < b.name;
+    });
+    return entries;
+}
+
+namespace {
+
+// The browser's list; returns the file picked, or "".
+std::string drawBrowser(FileUi& ui) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path dir = fs::absolute(ui.browseDir.empty() ? fs::path(".") : fs::path(ui.browseDir), ec).lexically_normal();
+    ImGui::TextWrapped("%s", dir.string().c_str());
+    std::string picked;
+    if (ImGui::BeginChild("##browser", ImVec2(0.0f, 180.0f), true)) {
+        if (dir.has_parent_path() && dir != dir.root_path() && ImGui::Selectable("../")) ui.browseDir = dir.parent_path().string();
+        for (const BrowseEntry& e : browseEntries(dir.string())) {
+            const std::string label = e.folder ? e.name + "/" : e.name;
+            if (!ImGui::Selectable(label.c_str())) continue;
+            if (e.folder) ui.browseDir = (dir / e.name).string();
+            else picked = (dir / e.name).string();
+        }
+    }
+    ImGui::EndChild();
+    return picked;
+}
+
+}  // namespace
 
 std::string drawFilePanel(FileUi& ui) {
     std::string open;
@@ -26,6 +76,15 @@ std::string drawFilePanel(FileUi& ui) {
         "does the same.");
     ImGui::SameLine();
     if ((ImGui::Button("open") || entered) && ui.path[0] != '\0') open = ui.path;
+    ImGui::SameLine();
+    if (ImGui::Button(ui.browsing ? "close browser" : "browse...")) ui.browsing = !ui.browsing;
+    if (ui.browsing) {
+        const std::string picked = drawBrowser(ui);
+        if (!picked.empty()) {
+            open = picked;
+            std::snprintf(ui.path, sizeof ui.path, "%s", picked.c_str());
+        }
+    }
     if (!ui.recent.empty()) {
         ImGui::TextDisabled("recent:");
         for (std::size_t i = 0; i < ui.recent.size(); ++i) {
@@ -36,45 +95,6 @@ std::string drawFilePanel(FileUi& ui) {
         }
     }
     return open;
-}
-
-void drawMessageToast(ViewerStatus& status, const LoadingInfo& loading, float x0, float width) {
-    if (status.lastError.empty() && status.notices.empty() && !loading.active) return;
-    const float toastWidth = std::min(width - 20.0f, 560.0f);
-    ImGui::SetNextWindowPos(ImVec2(x0 + 0.5f * (width - toastWidth), 8.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(toastWidth, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(0.92f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
-    if (!ImGui::Begin("##messages", nullptr, flags)) {
-        ImGui::End();
-        return;
-    }
-    if (loading.active) {
-        if (loading.textures)
-            ImGui::Text("uploading the textures of %s", loading.file.c_str());
-        else
-            ImGui::Text("%s %s  (%.1f s)", loading.uploading ? "uploading" : "loading", loading.file.c_str(),
-                        loading.seconds);
-        const float fraction =
-            loading.uploading && !loading.textures ? 1.0f : float(std::clamp(loading.fraction, 0.0, 1.0));
-        char label[32];
-        std::snprintf(label, sizeof label, "%.0f %%", 100.0 * fraction);
-        ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), label);
-    }
-    if (!status.lastError.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("%s", status.lastError.c_str());
-        ImGui::PopStyleColor();
-    }
-    for (const std::string& n : status.notices) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", n.c_str());
-    if (!status.lastError.empty() || !status.notices.empty()) {
-        if (ImGui::SmallButton("dismiss")) {
-            status.lastError.clear();
-            status.notices.clear();
-        }
-    }
-    ImGui::End();
 }
 
 }  // namespace shadowlab::ui

@@ -70,7 +70,8 @@ bool enumCombo(const char* label, E& value, const E (&values)[N], const char* co
         }
         ImGui::EndCombo();
     }
-    tip(tooltip);
+    // The full name of the choice first: the combo box may cut it.
+    tip((std::string(names[current]) + ": " + tooltip).c_str());
     return changed;
 }
 
@@ -139,7 +140,10 @@ const char* postPerspectiveName(PostPerspectiveLight kind) {
 }
 
 void fallbackLine(const ShadowDiagnostics& d) {
-    if (!d.fallback.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", d.fallback.c_str());
+    if (d.fallback.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", d.fallback.c_str());  // a sentence: wrapped, not cut at the panel's edge
+    ImGui::PopStyleColor();
 }
 
 }  // namespace
@@ -158,7 +162,9 @@ bool drawMethodPanel(Settings& s, const FrameStats& stats) {
                          "Resolution of the square depth map. Perspective aliasing shrinks with more texels, but "
                          "the warping methods get the same quality from fewer (thesis 3.1, 8.2).");
     if (stats.shadowMapSize > 0)
-        ImGui::TextDisabled("rendered %d x %d, %s", stats.shadowMapSize, stats.shadowMapSize,
+        ImGui::TextDisabled("%s %d x %d, %s",
+                            stats.shadowMapSize == s.shadowMapSize ? "rendered" : "the left view rendered",
+                            stats.shadowMapSize, stats.shadowMapSize,
                             stats.shadow.focused ? "focused on B" : "not focused");
     fallbackLine(stats.shadow);
     return changed;
@@ -519,8 +525,8 @@ bool drawOverlayPanel(Settings& s, ObserverView& observer) {
                         "LiSPSM: the perspective frustum P and its projection centre C (thesis 8.1 Fig. 8.1, 9.2.4 "
                         "Fig. 9.1); PSM: the post-perspective light mapped back, when finite. Spot lights also "
                         "show their frustum L (orange).");
-    ImGui::TextDisabled("also drawn: orange lines = light rays / spot frustum L,");
-    ImGui::TextDisabled("yellow star = projection centre C of P (LiSPSM)");
+    wrappedDisabledText("also drawn: orange lines = light rays / spot frustum L, yellow star = projection centre C "
+                        "of P (LiSPSM)");
     if (s.csm.enabled) {
         // The split colours of csm.colorSplits (shaders/cascade.glsl), near to far.
         ImGui::TextDisabled("cascades: B_i and V's slice (darker) per split:");

@@ -1,14 +1,15 @@
 #include "screen_overlays.h"
 
 #include "accuracy_panel.h"
+#include "widgets.h"
 
 #include <imgui.h>
 
 namespace shadowlab::ui {
 
-void drawHeatLegendWindow(float viewWidth) {
+void drawHeatLegendWindow(float viewWidth, float top) {
     constexpr float kWidth = 250.0f;
-    ImGui::SetNextWindowPos(ImVec2(viewWidth - kWidth - 8.0f, 8.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(viewWidth - kWidth - 8.0f, top), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kWidth, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.75f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -16,7 +17,7 @@ void drawHeatLegendWindow(float viewWidth) {
     if (ImGui::Begin("##heat legend", nullptr, flags)) {
         ImGui::TextUnformatted("screen pixels per shadow-map texel");
         drawHeatLegend();
-        ImGui::TextDisabled("hover the image for the value under the cursor");
+        wrappedDisabledText("hover the image for the value under the cursor");
     }
     ImGui::End();
 }

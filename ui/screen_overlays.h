@@ -3,7 +3,8 @@
 // aliasing error view. ImGui only.
 namespace shadowlab::ui {
 
-// The colour bar of the aliasing heat map at the top-right of the 3D area (0 .. viewWidth).
-void drawHeatLegendWindow(float viewWidth);
+// The colour bar of the aliasing heat map at the top-right of the 3D area (0 .. viewWidth), its
+// top at `top` (below the notification area).
+void drawHeatLegendWindow(float viewWidth, float top);
 
 }  // namespace shadowlab::ui

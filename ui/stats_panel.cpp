@@ -4,11 +4,19 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace shadowlab::ui {
 
-void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, const ViewerStatus& status) {
-    ImGui::SetNextWindowPos(ImVec2(10, 36), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, const ViewerStatus& status,
+                    const ScreenArea& area) {
+    constexpr float kMinWidth = 180.0f, kMinHeight = 60.0f, kMargin = 10.0f;
+    const float width = std::min(340.0f, area.x1 - area.x0 - 2.0f * kMargin), height = area.y1 - area.y0;
+    if (width < kMinWidth || height < kMinHeight) return;
+    // Placed every frame: below the notifications (whose height changes), above the insets' labels.
+    ImGui::SetNextWindowPos(ImVec2(area.x0 + kMargin, area.y0), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, height));
+    ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.8f);
     if (status.collapseStats) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Always);
     if (!ImGui::Begin("Stats")) {
@@ -19,6 +27,9 @@ void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, cons
     ImGui::TextDisabled("%s", status.renderer.c_str());
     ImGui::Separator();
     ImGui::Text("%.1f fps   frame CPU %.2f ms", fps, frameCpuMs);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Frames drawn per second while the picture changes (an idle window draws nothing).");
+    if (!status.navigation.empty()) ImGui::TextWrapped("%s", status.navigation.c_str());
     if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("CPU ms");
@@ -66,8 +77,6 @@ void drawStatsPanel(const FrameStats& stats, double fps, double frameCpuMs, cons
     if (!stats.lightNote.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s", stats.lightNote.c_str());
     if (!stats.shadow.fallback.empty())
         ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s", stats.shadow.fallback.c_str());
-    if (!status.lastError.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s", status.lastError.c_str());
-    if (!status.lastMessage.empty()) ImGui::TextWrapped("%s", status.lastMessage.c_str());
     ImGui::End();
 }
 

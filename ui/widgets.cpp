@@ -1,5 +1,7 @@
 #include "widgets.h"
 
+#include <imgui_internal.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -20,12 +22,13 @@ void tooltipText(const char* text) {
 void helpMarker(const char* text) {
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
-    if (ImGui::IsItemHovered()) tooltipText(text);
+    // Disabled controls explain themselves too (why they are disabled is often the point).
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) tooltipText(text);
 }
 
 void tip(const char* text) {
     if (!text || !*text) return;
-    if (ImGui::IsItemHovered()) tooltipText(text);
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) tooltipText(text);
     helpMarker(text);
 }
 
@@ -63,11 +66,31 @@ void readout(const char* label, const std::string& value, const char* tooltip) {
     if (tooltip) helpMarker(tooltip);
 }
 
+void wrappedDisabledText(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
 std::string formatNumber(double value, int precision) {
     if (!std::isfinite(value)) return std::isnan(value) ? "n/a" : (value > 0 ? "+inf" : "-inf");
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*g", precision, value);
     return buf;
+}
+
+bool panelAt(const ImVec2& position) {
+    const ImGuiContext* context = ImGui::GetCurrentContext();
+    if (!context) return false;
+    for (const ImGuiWindow* window : context->Windows) {
+        if (!window->Active || window->Hidden || (window->Flags & ImGuiWindowFlags_NoMouseInputs)) continue;
+        // The resize grips reach a few pixels beyond the window (ImGui's WINDOWS_HOVER_PADDING).
+        const float pad = (window->Flags & ImGuiWindowFlags_NoResize) ? 0.0f : 4.0f;
+        ImRect rect = window->Rect();
+        rect.Expand(pad);
+        if (rect.Contains(position)) return true;
+    }
+    return false;
 }
 
 }  // namespace shadowlab::ui

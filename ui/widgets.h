@@ -24,5 +24,13 @@ bool sliderInt(const char* label, int& value, int min, int max, const char* tool
 // A read-out line "label  value" with its tooltip.
 void readout(const char* label, const std::string& value, const char* tooltip);
 std::string formatNumber(double value, int precision = 4);
+// Greyed text wrapped at the window's edge (not cut off in a narrow panel).
+void wrappedDisabledText(const char* text);
+
+// Whether an ImGui window drawn last frame lies under `position` (ImGui's coordinates): asked per
+// input event, at the cursor position of that event, instead of last frame's
+// io.WantCaptureMouse, which still says "no" when the pointer moved onto a panel and the wheel
+// turned within one frame.
+bool panelAt(const ImVec2& position);
 
 }  // namespace shadowlab::ui

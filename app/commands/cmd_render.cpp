@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string out;
     int width = 1280;
     int height = 720;
+    bool sizeGiven = false;  // --width or --height on the command line
     bool measure = false;
     std::string statsFile;  // --stats: the frame's figures as JSON
     std::string camera;     // --camera NAME|INDEX
@@ -139,7 +140,40 @@ void checkGlSize(const RenderOptions& options) {
         fail("--width/--height beyond this OpenGL implementation's limit of " + std::to_string(limit) + " pixels", 2);
 }
 
-void runRender(const RenderOptions& options) {
+// A screenshot given as --view names its scene and the size it was rendered at: without SCENE the
+// shot's scene is rendered (refused when its content changed since), without --width/--height its
+// size. The viewer's F12 shot is then reproduced by `render --view shot.png --out re.png` alone.
+void takeSceneAndSizeFromShot(RenderOptions& options) {
+    const std::optional<ShotOrigin> origin =
+        options.overrides.viewFile.empty() ? std::nullopt : readShotOrigin(options.overrides.viewFile);
+    if (options.scene.empty()) {
+        if (!origin)
+            fail("no SCENE given, and " +
+                     (options.overrides.viewFile.empty() ? std::string("no --view")
+                                                         : "--view " + options.overrides.viewFile) +
+                     " names none (only screenshots shadowlab saves name their scene)",
+                 2);
+        const std::string file = shotSceneFile(*origin);
+        if (file.empty())
+            fail(options.overrides.viewFile + " was taken in " + origin->scene + " (" + origin->sceneAbsolute +
+                     "), which is not there; give the scene as SCENE",
+                 2);
+        const std::string hash = sceneFileHash(file);
+        if (!origin->sceneHash.empty() && hash != origin->sceneHash)
+            fail(file + " is not the scene " + options.overrides.viewFile + " was taken in (content " + hash +
+                     ", the shot's " + origin->sceneHash + "); give SCENE explicitly to render it anyway",
+                 2);
+        options.scene = file;
+        std::cerr << "shadowlab render: scene " << file << " (from " << options.overrides.viewFile << ")\n";
+    }
+    if (!options.sizeGiven && origin && origin->width > 0) {
+        options.width = origin->width;
+        options.height = origin->height;
+    }
+}
+
+void runRender(RenderOptions options) {
+    takeSceneAndSizeFromShot(options);
     checkImageSize(options);
     std::string error;
     LoadOptions load;
@@ -240,10 +274,13 @@ void runRender(const RenderOptions& options) {
 void addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene headless (EGL) to a PNG");
-    cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
+    cmd->add_option("scene", options->scene,
+                    "glTF scene (.gltf or .glb); may be left out when --view is a shadowlab screenshot (its scene)");
     cmd->add_option("--out,-o", options->out, "PNG file to write")->required();
-    cmd->add_option("--width", options->width, "image width in pixels")->capture_default_str();
-    cmd->add_option("--height", options->height, "image height in pixels")->capture_default_str();
+    CLI::Option* width = cmd->add_option("--width", options->width,
+                                         "image width in pixels (default: a screenshot --view's, else 1280)");
+    CLI::Option* height = cmd->add_option("--height", options->height,
+                                          "image height in pixels (default: a screenshot --view's, else 720)");
     cmd->add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
     cmd->add_option("--camera", options->camera,
                     "the scene's glTF camera to render from, by name or 0-based index (before --view and --set)");
@@ -271,7 +308,10 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--mismatch-out", options->mismatchOut,
                     "with --measure --truth: write the mismatches as a PNG (light / dark grey: agree lit / in shadow; "
                     "red false shadow, blue false light, near-black: not a lit-facing receiver)");
-    cmd->callback([options] { runRender(*options); });
+    cmd->callback([options, width, height] {
+        options->sizeGiven = width->count() > 0 || height->count() > 0;
+        runRender(*options);
+    });
 }
 
 }  // namespace shadowlab::app

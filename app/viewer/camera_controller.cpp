@@ -1,6 +1,7 @@
 #include "viewer/camera_controller.h"
 
 #include "frame/frame_setup.h"
+#include "viewer/ground_probe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,13 +39,20 @@ void CameraController::apply(CameraSettings& camera, const CameraInput& in) cons
     }
     camera.yawDeg += in.lookDelta.x * kDegreesPerPixel;
     camera.pitchDeg = std::clamp(camera.pitchDeg - in.lookDelta.y * kDegreesPerPixel, -89.0, 89.0);
-    const Basis b = cameraBasis(camera);
+    Basis b = cameraBasis(camera);
+    const glm::dvec3 from = camera.position;
+    glm::dvec3 flight = in.flight;
+    if (walkOn) {
+        b.forward = glm::normalize(glm::dvec3(b.forward.x, 0.0, b.forward.z));  // pitch stays with the head
+        flight.y = 0.0;
+    }
     const double speed = camera.moveSpeed * (in.fast ? 4.0 : 1.0);
-    camera.position += (b.right * in.move.x + glm::dvec3(0, 1, 0) * in.move.y + b.forward * in.move.z) * speed * in.dt;
+    camera.position += (b.right * flight.x + glm::dvec3(0, 1, 0) * flight.y + b.forward * flight.z) * speed;
     // Zoom: each wheel notch moves a tenth of the way to the pivot (at least a twentieth of a
     // second of flying, so the camera can pass through the pivot).
     const double step = std::max(0.1 * glm::distance(pivot, camera.position), 0.05 * camera.moveSpeed);
     camera.position += b.forward * (in.scroll * step);
+    if (walkOn && camera.position != from) camera.position = walkTo(*walkOn, from, camera.position, walkEyeHeight);
 }
 
 CameraSettings framedCamera(const CameraSettings& camera, const Aabb& bounds, double aspect) {

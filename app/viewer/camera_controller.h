@@ -5,9 +5,10 @@
 
 namespace shadowlab::app {
 
+class GroundProbe;
+
 struct CameraInput {
-    double dt = 0.0;                 // seconds since the last frame
-    glm::dvec3 move{0.0};            // WASD/QE: x right, y up, z forward, each in [-1, 1]
+    glm::dvec3 flight{0.0};          // WASD/QE: seconds flown along x right, y up, z forward (FlyKeys)
     bool fast = false;               // shift
     glm::dvec2 lookDelta{0.0};       // left drag, pixels: fly look
     glm::dvec2 orbitDelta{0.0};      // right drag, pixels: orbit around the pivot
@@ -19,6 +20,10 @@ public:
     // The point right drag orbits around and the wheel dollies towards: the centre of the scene
     // bounds (a point in front of the camera let small models swing out of view).
     glm::dvec3 pivot{0.0};
+    // Walk mode: with a scene, the eye stays walkEyeHeight above the ground under it
+    // (viewer/ground_probe.h) and W/S move along the ground; E/Q do nothing.
+    const GroundProbe* walkOn = nullptr;
+    double walkEyeHeight = 1.7;
     void apply(CameraSettings& camera, const CameraInput& input) const;
 };
 

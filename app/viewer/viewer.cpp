@@ -3,8 +3,8 @@
 // OverlayRenderer (renderer/overlays/overlay.h), split compare views and the glTF animations.
 //
 // Controls (also in the "keys and mouse" help of the View state panel): left drag looks, right drag
-// orbits the scene centre, wheel dollies, W/A/S/D/Q/E fly (shift: faster), Home/F frames the scene,
-// R returns to the scene's camera, 1-4 pick SSM / SSM unfocused / PSM / LiSPSM, space plays/pauses,
+// orbits the scene centre, wheel dollies, W/A/S/D/Q/E fly (shift: faster; +/- or the wheel while
+// flying change the speed), G walks on the ground, Home/F frames the scene, R returns to the scene's camera, 1-4 pick SSM / SSM unfocused / PSM / LiSPSM, space plays/pauses,
 // F1 hides the panels, F12 saves a screenshot; dragging or scrolling over the observer inset turns
 // and zooms the observer. File > Open or dropping a file opens a scene (.gltf/.glb), applies a view
 // state (.json) or the settings embedded in a shadowlab screenshot (.png).
@@ -14,10 +14,12 @@
 #include "commands.h"
 #include "gl/debug_output.h"
 #include "image/png_text.h"
+#include "notifications.h"
 #include "resources/render_target.h"
 #include "screen_overlays.h"
 #include "scenes/animation.h"
 #include "settings/method_choice.h"
+#include "viewer/ground_probe.h"
 #include "viewer/viewer_frame.h"
 #include "viewer/viewer_open.h"
 #include "widgets.h"
@@ -69,9 +71,40 @@ bool writeTextFile(const std::string& file, const std::string& text, std::string
     return true;
 }
 
+// Fly speed times 1.25 per step (steps < 0: slower), within the speed slider's range.
+void changeFlySpeed(ViewerState& state, double steps) {
+    CameraSettings& camera = state.settings.camera;
+    camera.moveSpeed = std::clamp(camera.moveSpeed * std::pow(1.25, steps), 0.05, 1000.0);
+    state.status.lastMessage = "fly speed " + ui::formatNumber(camera.moveSpeed, 3) + " m/s";
+}
+
+// Walk mode on (the eye kept at its present height above the ground under it) or off.
+void toggleWalk(ViewerState& state) {
+    CameraController& controller = state.controller;
+    if (controller.walkOn || !state.scene) {
+        controller.walkOn = nullptr;
+        state.status.lastMessage = "flying (G walks)";
+        return;
+    }
+    if (!state.ground) state.ground.emplace(*state.scene);  // indexed once per scene
+    const glm::dvec3 eye = state.settings.camera.position;
+    const std::optional<double> ground = state.ground->below(eye.x, eye.z, eye.y);
+    if (!ground) {
+        state.status.lastMessage = "no ground under the camera to walk on";
+        return;
+    }
+    controller.walkEyeHeight = std::max(0.05, eye.y - *ground);
+    controller.walkOn = &*state.ground;
+    state.status.lastMessage =
+        "walking, the eye " + ui::formatNumber(controller.walkEyeHeight, 3) + " m above the ground (G flies)";
+}
+
 void runAction(ViewerState& state, ViewerAction action, double aspect) {
     if (applyMethodAction(action, state.settings)) return;
     switch (action) {
+        case ViewerAction::FlyFaster: changeFlySpeed(state, 1.0); break;
+        case ViewerAction::FlySlower: changeFlySpeed(state, -1.0); break;
+        case ViewerAction::ToggleWalk: toggleWalk(state); break;
         case ViewerAction::TogglePlay: state.settings.animation.playing = !state.settings.animation.playing; break;
         case ViewerAction::ToggleUi: state.showUi = !state.showUi; break;
         case ViewerAction::Screenshot: state.screenshotRequested = true; break;
@@ -96,6 +129,13 @@ glm::dvec2 toFramebuffer(GLFWwindow* window, const glm::dvec2& p) {
 // Turns this frame's events into actions, drags and wheel steps, in the order they happened.
 void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow* window, const Layout& layout) {
     const ImGuiIO& io = ImGui::GetIO();  // what ImGui wanted at the end of the last frame
+    // The mouse belongs to ImGui where a panel lies under the cursor at the time of the event (not
+    // where it lay at the end of the last frame), while a widget is being dragged, or a popup is open.
+    auto panelWantsMouse = [&] {
+        const glm::dvec2 p = state.drag.cursor();
+        return ui::panelAt(ImVec2(float(p.x), float(p.y))) || ImGui::IsAnyItemActive() ||
+               ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+    };
     const double aspect = layout.views.empty() ? 1.0 : double(layout.views[0].width) / layout.views[0].height;
     auto insetUnderCursor = [&] {
         const glm::dvec2 p = toFramebuffer(window, state.drag.cursor());
@@ -105,7 +145,7 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
     for (const InputEvent& e : events) {
         switch (e.kind) {
             case InputKind::Key: {
-                if (!io.WantCaptureKeyboard || e.action == GLFW_RELEASE) state.fly.onKey(e.code, e.action);
+                if (!io.WantCaptureKeyboard || e.action == GLFW_RELEASE) state.fly.onKey(e.code, e.action, e.mods, e.time);
                 if (e.action != GLFW_PRESS) break;
                 const ViewerAction action = actionForKey(e.code, e.mods);
                 if (!io.WantCaptureKeyboard || actsWhileTyping(action)) runAction(state, action, aspect);
@@ -120,8 +160,9 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
                         insetUnderCursor() == pressed)
                         state.enlargedInset = state.enlargedInset == pressed ? InsetKind::None : pressed;
                 } else if (e.code == GLFW_MOUSE_BUTTON_LEFT || e.code == GLFW_MOUSE_BUTTON_RIGHT) {
-                    state.pressedInset = io.WantCaptureMouse ? InsetKind::None : insetUnderCursor();
-                    const DragTarget target = io.WantCaptureMouse ? DragTarget::None
+                    const bool panel = panelWantsMouse();
+                    state.pressedInset = panel ? InsetKind::None : insetUnderCursor();
+                    const DragTarget target = panel ? DragTarget::None
                                               : overObserver()    ? DragTarget::Observer
                                               : e.code == GLFW_MOUSE_BUTTON_LEFT ? DragTarget::Look
                                                                                  : DragTarget::Orbit;
@@ -130,8 +171,10 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
                 break;
             case InputKind::CursorMove: state.drag.onCursor(e.position); break;
             case InputKind::Scroll:
-                if (io.WantCaptureMouse) break;
-                if (overObserver())
+                if (panelWantsMouse()) break;
+                if (state.fly.anyHeld() || state.drag.target() == DragTarget::Look)
+                    changeFlySpeed(state, e.scroll);  // while flying, the wheel sets the speed
+                else if (overObserver())
                     state.observer.distance = std::clamp(state.observer.distance * std::pow(0.9, e.scroll), 0.3, 5.0);
                 else
                     state.scroll += e.scroll;
@@ -140,10 +183,9 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
     }
 }
 
-CameraInput cameraInput(ViewerState& state, double dt) {
+CameraInput cameraInput(ViewerState& state) {
     CameraInput in;
-    in.dt = dt;
-    in.move = state.fly.takeMove();
+    in.flight = state.fly.takeFlight(glfwGetTime());
     in.fast = state.fly.fast();
     in.scroll = std::exchange(state.scroll, 0.0);
     const DragDeltas drag = state.drag.takeDeltas();
@@ -159,6 +201,7 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
     // The z_f the auto mode picked last frame (thesis 9.2.5: the farthest visible depth from
     // the renderer's depth pre-pass), for the LiSPSM panel's slider.
     static const Scene kNoScene{};
+    state.accuracy.view.stale = state.accuracy.view.measured && !stillMeasured(state.accuracy, state.settings);
     ui::ControlContext ctx{&state.stats,    state.scene ? &*state.scene : &kNoScene, state.animation,
                            state.stats.virtualFarUsed, &state.observer, &state.viewState, &state.file,
                            &state.accuracy.view, &state.accuracy.toggles};
@@ -188,23 +231,38 @@ void drawPanels(ViewerState& state, int fbWidth, int fbHeight) {
 
 // A screenshot carries the settings it was rendered with in a PNG tEXt chunk (renderer/image/png_text.h)
 // and, when `jsonBeside`, as FILE.json next to it: dropping it on the viewer or `shadowlab render
-// --view shot.png` reproduces the image.
-void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string& file, bool jsonBeside) {
+// --view shot.png` reproduces the image. The PNG also names the scene and the size of the 3D view (ShotOrigin, app/view_setup.h), so
+// `render --view shot.png` needs neither.
+void saveScreenshot(ViewerState& state, const RgbaImage& shot, const std::string& file, bool jsonBeside,
+                    const InsetRect& view) {
     std::string error;
-    state.status.lastError.clear();
     const std::string json = toJsonText(state.settings);
-    if (!writePng(shot, file, error) || !addPngTextToFile(file, kSettingsPngKeyword, json, error)) {
+    std::error_code ec;
+    const ShotOrigin origin{view.width, view.height, state.status.sceneName,
+                            std::filesystem::absolute(state.status.sceneName, ec).string(), state.sceneHash};
+    if (!writePng(shot, file, error) || !addPngTextToFile(file, kSettingsPngKeyword, json, error) ||
+        !writeShotOrigin(file, origin, error)) {
         state.status.lastError = error;
     } else {
-        state.status.lastMessage = "saved " + file + " (settings embedded)";
+        const std::filesystem::path path = std::filesystem::absolute(file, ec);
+        state.status.lastMessage = "saved " + path.filename().string() + " (" + std::to_string(shot.width) + "x" +
+                                   std::to_string(shot.height) + ") in " + path.parent_path().string();
         if (jsonBeside) {
             const std::string beside = std::filesystem::path(file).replace_extension(".json").string();
-            if (writeTextFile(beside, json, error)) state.status.lastMessage += " and " + beside;
+            if (writeTextFile(beside, json, error))
+                state.status.lastMessage += ", settings also in " + std::filesystem::path(beside).filename().string();
             else state.status.lastError = error;
         }
     }
-    std::cerr << "shadowlab: " << (state.status.lastError.empty() ? state.status.lastMessage : state.status.lastError)
-              << "\n";
+    std::cerr << "shadowlab: " << (error.empty() ? state.status.lastMessage : error) << "\n";
+}
+
+// The Stats window's line on how the camera moves and how to change it.
+std::string navigationLine(const ViewerState& state) {
+    const std::string speed = ui::formatNumber(state.settings.camera.moveSpeed, 3) + " m/s";
+    if (state.controller.walkOn)
+        return "walk " + speed + ", eye " + ui::formatNumber(state.controller.walkEyeHeight, 3) + " m: +/-; G flies";
+    return "fly " + speed + ": +/- or wheel while flying; G walks";
 }
 
 void updateTitle(GLFWwindow* window, const ViewerState& state, std::string& windowTitle) {
@@ -226,6 +284,8 @@ void syncGroundPlane(ViewerState& state, Renderer& renderer) {
     } else {
         state.groundPlane = addGroundPlane(*state.scene);
     }
+    state.ground.reset();  // walk mode stands on the plane (or no longer) from now on
+    if (state.controller.walkOn) state.controller.walkOn = &state.ground.emplace(*state.scene);
     renderer.setScene(*state.scene, true);  // a re-upload streams its textures too
     state.texturesTotal = state.texturesPending = state.scene->textures.size();
     state.status.sceneTriangles = state.scene->triangleCount();
@@ -315,17 +375,18 @@ void runViewer(const ViewerOptions& options) {
                                 state.texturesPending > 0 ||
                                 renderer->readbackPending();  // the visible-depth result arrives next frame
         if (continuous || framesOwed > 0) glfwPollEvents();
-        else if (state.load) glfwWaitEventsTimeout(0.1);  // the progress bar moves
+        else if (state.load || ui::notificationsFading(state.status))
+            glfwWaitEventsTimeout(0.1);  // the progress bar moves, a message fades
         else glfwWaitEvents();
         std::vector<InputEvent> input = events.input.drain();
         if (!input.empty() || !events.droppedFiles.empty() || std::exchange(events.exposed, false))
             framesOwed = kSettleFrames;
 
         const auto now = Clock::now();
-        // Clamped: the first frame after an idle wait must not fly or animate by the wait.
+        // Clamped: the first frame after an idle wait must not animate by the wait (flight is
+        // integrated on the keys' own times, FlyKeys).
         const double dt = std::min(0.25, std::chrono::duration<double>(now - last).count());
         last = now;
-        if (dt > 0.0 && frame > 0) fps = fps == 0.0 ? 1.0 / dt : fps * 0.95 + 0.05 / dt;
 
         if (state.uploadNext) {
             finishSceneLoad(state, *renderer, options.overrides);
@@ -362,7 +423,7 @@ void runViewer(const ViewerOptions& options) {
         const std::vector<Pane> panes = framePanes(state.ab, state.settings);
         const Layout layout =
             layoutFrame(fbWidth, fbHeight, state.showUi && !state.panelCollapsed, state.settings, int(panes.size()), state.enlargedInset);
-        if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state, dt));
+        if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state));
         updateTitle(window.get(), state, windowTitle);
 
         const auto cpuStart = Clock::now();
@@ -400,7 +461,8 @@ void runViewer(const ViewerOptions& options) {
         else if (state.texturesPending > 0)
             loading = {true, state.status.sceneName, 0.0, false,
                        1.0 - double(state.texturesPending) / double(std::max<std::size_t>(1, state.texturesTotal)), true};
-        ui::drawMessageToast(state.status, loading, 0.0f, float(layout.viewWidth));
+        const float belowNotifications =
+            ui::drawNotifications(state.status, loading, 0.0f, float(layout.viewWidth), glfwGetTime());
         // F12 without panels: the rendered 3D area as it is now, before any ImGui drawing.
         std::optional<RgbaImage> bareShot;
         if (state.screenshotRequested && !state.viewState.screenshotPanels && fbWidth > 0 && fbHeight > 0)
@@ -408,29 +470,37 @@ void runViewer(const ViewerOptions& options) {
         // Captions (method names, inset titles, error numbers) belong to the image: they stay with F1.
         addErrorCaptions(views, layout, toFramebuffer(window.get(), state.drag.cursor()), views.captions);
         ui::drawCaptions(views.captions);
-        if (state.settings.viewMode == ViewMode::AliasingError) ui::drawHeatLegendWindow(float(layout.viewWidth));
+        if (state.settings.viewMode == ViewMode::AliasingError)
+            ui::drawHeatLegendWindow(float(layout.viewWidth), belowNotifications);
         if (state.scene && !layout.views.empty())
             drawMismatchOverlay(state.accuracy, state.settings, float(layout.views[0].x), float(layout.views[0].y),
                                 float(layout.views[0].width), float(layout.views[0].height));
         if (state.showUi) {
             // Split compare began: fold the stats window so it does not cover the left view.
-            state.status.collapseStats = views.paneStats.size() > 1 && std::exchange(state.splitShown, true) == false;
+            // Not in A/B compare: storing A is no reason to hide the figures.
+            state.status.collapseStats = views.paneStats.size() > 1 && !state.ab.active &&
+                                         std::exchange(state.splitShown, true) == false;
             if (views.paneStats.size() <= 1) state.splitShown = false;
             state.status.compareLines = views.compareLines;
-            ui::drawStatsPanel(state.stats, fps, frameCpuMs, state.status);
+            state.status.navigation = navigationLine(state);
+            ui::drawStatsPanel(state.stats, fps, frameCpuMs, state.status, statsArea(layout, belowNotifications));
         }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
+        const InsetRect shotView = layout.views.empty() ? InsetRect{} : layout.views[0];
         // --frames counts frames of a scene (or of the error, when none could be loaded).
         const bool counting = options.frames > 0 && !state.load && !state.uploadNext;
         const bool lastFrame = counting && frame + 1 >= options.frames;
         if (lastFrame && !options.screenshot.empty())  // --screenshot: the window as shown, panels and all
-            saveScreenshot(state, readFramebuffer(0, 0, 0, fbWidth, fbHeight), options.screenshot, false);
+            saveScreenshot(state, readFramebuffer(0, 0, 0, fbWidth, fbHeight), options.screenshot, false, shotView);
         if (std::exchange(state.screenshotRequested, false))
             saveScreenshot(state, bareShot ? *bareShot : readFramebuffer(0, 0, 0, fbWidth, fbHeight),
-                           ui::screenshotFileName(state.settings, std::time(nullptr)), true);
+                           ui::screenshotFileName(state.settings, std::time(nullptr)), true, shotView);
         glfwSwapBuffers(window.get());
+        // The rate the viewer draws at: the frame's own time, not counting an idle wait for events.
+        const double frameSeconds = std::chrono::duration<double>(Clock::now() - now).count();
+        if (frameSeconds > 0.0) fps = fps == 0.0 ? 1.0 / frameSeconds : fps * 0.8 + 0.2 / frameSeconds;
         if (!(state.settings == before)) {
             framesOwed = kSettleFrames;
             noteSceneNotices(state);

@@ -84,23 +84,26 @@ void uploadMismatch(ViewerAccuracy& a, const RgbaImage& image) {
 }
 
 // The histogram and the mismatch picture: of the frame the view shows.
-void showCurrent(ViewerAccuracy& a, ui::AccuracyView& view, const MeasureFrame& frame, const AccuracyReport& report) {
+void showCurrent(ViewerAccuracy& a, ui::AccuracyView& view, const MeasureFrame& frame, const AccuracyReport& report,
+                 const std::string& name) {
     view.histogram = log2Histogram(frame.footprint, view.histogramLog2Low, view.histogramLog2High, 24);
+    view.histogramOf = name;
     if (report.truth) uploadMismatch(a, mismatchImage(report.verdicts, frame.width, frame.height));
 }
 
 }  // namespace
 
+bool stillMeasured(const ViewerAccuracy& a, const Settings& settings) {
+    const Settings& m = a.measuredSettings;
+    return settings.camera == m.camera && settings.light == m.light && settings.method == m.method &&
+           settings.csm == m.csm && settings.shadowMapSize == m.shadowMapSize && settings.bias == m.bias &&
+           settings.filter == m.filter && settings.lispsm == m.lispsm && settings.psm == m.psm &&
+           settings.animation.time == m.animation.time;
+}
+
 void drawMismatchOverlay(const ViewerAccuracy& a, const Settings& settings, float x, float y, float width,
                          float height) {
-    const Settings& m = a.measuredSettings;
-    // What the shadow state depends on (not overlays, compare layout or display settings).
-    const bool sameView = settings.camera == m.camera && settings.light == m.light && settings.method == m.method &&
-                          settings.csm == m.csm &&
-                          settings.shadowMapSize == m.shadowMapSize && settings.bias == m.bias &&
-                          settings.filter == m.filter && settings.lispsm == m.lispsm && settings.psm == m.psm &&
-                          settings.animation.time == m.animation.time;
-    if (!a.toggles.overlayMismatches || !a.mismatch || !sameView) return;
+    if (!a.toggles.overlayMismatches || !a.mismatch || !stillMeasured(a, settings)) return;
     ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(std::uintptr_t(a.mismatch.id())),
                                              ImVec2(x, y), ImVec2(x + width, y + height));
 }
@@ -151,7 +154,7 @@ void measureForPanel(ViewerAccuracy& a, Renderer& renderer, const Scene& scene, 
         }
         const bool current = !shown.cascaded && (method == settings.method || (settings.method == ShadowMethod::SsmUnfocused &&
                                                                               method == ShadowMethod::SsmFocused));
-        if (current) showCurrent(a, view, frame, report);
+        if (current) showCurrent(a, view, frame, report, methodName(method));
     }
     if (shown.cascaded) {
         Settings s = settings;
@@ -161,7 +164,7 @@ void measureForPanel(ViewerAccuracy& a, Renderer& renderer, const Scene& scene, 
         ui::AccuracyFigures figures = figuresOf(settings.method, report);
         figures.name = methodChoiceName(shown);
         view.methods.push_back(figures);
-        showCurrent(a, view, frame, report);
+        showCurrent(a, view, frame, report, figures.name);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     view.curves = std::move(measured);

@@ -29,6 +29,11 @@ void measureForPanel(ViewerAccuracy& accuracy, Renderer& renderer, const Scene& 
 void drawMismatchOverlay(const ViewerAccuracy& accuracy, const Settings& settings, float x, float y, float width,
                          float height);
 
+// Whether `settings` still show what was measured (the shadow state depends on camera, light,
+// method, cascades, map size, bias, filter, warp parameters and the scene time; not on overlays,
+// compare layout or display settings).
+bool stillMeasured(const ViewerAccuracy& accuracy, const Settings& settings);
+
 // A new scene: the BVH and the figures belong to the old one.
 void forgetScene(ViewerAccuracy& accuracy);
 

@@ -37,6 +37,26 @@ InsetKind insetAt(const Layout& layout, double x, double y) {
     return InsetKind::None;
 }
 
+ui::ScreenArea statsArea(const Layout& layout, float top) {
+    constexpr float kGap = 6.0f;
+    const float y0 = std::max(top, 36.0f);
+    float insetTop = float(layout.fbHeight), insetRight = 0.0f;
+    for (const InsetRect* r : {&layout.shadowMapInset, &layout.lightViewInset, &layout.observerInset})
+        if (!r->empty()) {
+            insetTop = std::min(insetTop, float(r->y) - kGap);
+            insetRight = std::max(insetRight, float(r->x + r->width) + kGap);
+        }
+    const ui::ScreenArea above{0.0f, y0, float(layout.viewWidth), std::max(y0, insetTop)};
+    const ui::ScreenArea beside{std::min(insetRight, float(layout.viewWidth)), y0, float(layout.viewWidth),
+                                std::max(y0, float(layout.fbHeight) - kGap)};
+    // Above the insets while that holds the window's first lines (it does not move when an inset
+    // is switched on); beside them under an enlarged inset, which reaches the top.
+    constexpr float kEnoughHeight = 160.0f;
+    if (above.y1 - above.y0 >= kEnoughHeight) return above;
+    auto area = [](const ui::ScreenArea& r) { return (r.x1 - r.x0) * (r.y1 - r.y0); };
+    return area(beside) > area(above) ? beside : above;
+}
+
 Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount,
                    InsetKind enlarged) {
     Layout l;

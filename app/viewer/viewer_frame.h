@@ -5,6 +5,7 @@
 #include "overlays/overlay.h"
 #include "gl/overlay_timer.h"
 #include "panels.h"
+#include "stats_panel.h"
 #include "renderer.h"
 
 #include <string>
@@ -33,6 +34,12 @@ InsetKind insetAt(const Layout& layout, double x, double y);
 // its width), the others at their size beside it while they fit.
 Layout layoutFrame(int fbWidth, int fbHeight, bool showUi, const Settings& settings, int paneCount = 0,
                    InsetKind enlarged = InsetKind::None);
+
+// Where the Stats window may go: the part of the 3D area below `top` (the notification area's
+// bottom, at least 36 px, under the split views' captions) that no inset or inset title
+// covers: above the inset row while that is at least 160 px tall, else right of the insets (an
+// enlarged inset reaches the top).
+ui::ScreenArea statsArea(const Layout& layout, float top);
 
 // One view of the frame: the settings it is rendered with and its caption ("" for none).
 struct Pane {

@@ -3,10 +3,16 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+
 namespace shadowlab::app {
 
+namespace {
+constexpr int kShortcutMods = GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER;
+}  // namespace
+
 ViewerAction actionForKey(int key, int mods) {
-    if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return ViewerAction::None;
+    if (mods & kShortcutMods) return ViewerAction::None;
     switch (key) {
         case GLFW_KEY_1: return ViewerAction::SelectSsm;
         case GLFW_KEY_2: return ViewerAction::SelectSsmUnfocused;
@@ -18,6 +24,11 @@ ViewerAction actionForKey(int key, int mods) {
         case GLFW_KEY_HOME:
         case GLFW_KEY_F: return ViewerAction::FrameScene;
         case GLFW_KEY_R: return ViewerAction::ResetCamera;
+        case GLFW_KEY_EQUAL:  // '+' on US layouts is shift + '='
+        case GLFW_KEY_KP_ADD: return ViewerAction::FlyFaster;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT: return ViewerAction::FlySlower;
+        case GLFW_KEY_G: return ViewerAction::ToggleWalk;
         default: return ViewerAction::None;
     }
 }
@@ -37,41 +48,47 @@ bool applyMethodAction(ViewerAction action, Settings& settings) {
 }
 
 namespace {
-bool isFlyKey(int key) {
+// The axis a fly key moves along, zero for other keys.
+glm::dvec3 flyAxis(int key) {
     switch (key) {
-        case GLFW_KEY_W: case GLFW_KEY_A: case GLFW_KEY_S: case GLFW_KEY_D: case GLFW_KEY_Q: case GLFW_KEY_E:
-            return true;
-        default:
-            return false;
+        case GLFW_KEY_D: return {1, 0, 0};
+        case GLFW_KEY_A: return {-1, 0, 0};
+        case GLFW_KEY_E: return {0, 1, 0};
+        case GLFW_KEY_Q: return {0, -1, 0};
+        case GLFW_KEY_W: return {0, 0, 1};
+        case GLFW_KEY_S: return {0, 0, -1};
+        default: return {0, 0, 0};
     }
 }
 }  // namespace
 
-void FlyKeys::onKey(int key, int action) {
+void FlyKeys::onKey(int key, int action, int mods, double time) {
     if (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT) {
         shift_ = action != GLFW_RELEASE;
         return;
     }
-    if (!isFlyKey(key)) return;
-    if (action == GLFW_PRESS) {
-        held_.insert(key);
-        tapped_.insert(key);
+    const glm::dvec3 axis = flyAxis(key);
+    if (axis == glm::dvec3(0.0)) return;
+    if (action == GLFW_PRESS && !held_.count(key) && !(mods & kShortcutMods)) {
+        flight_ += axis * kTapSeconds;  // the tap's flight at once; a hold counts after it
+        held_[key] = {time + kTapSeconds, 0};
     } else if (action == GLFW_RELEASE) {
         held_.erase(key);
     }
 }
 
-glm::dvec3 FlyKeys::takeMove() {
-    auto down = [&](int k) { return held_.count(k) || tapped_.count(k) ? 1.0 : 0.0; };
-    const glm::dvec3 move{down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
-                          down(GLFW_KEY_W) - down(GLFW_KEY_S)};
-    tapped_.clear();
-    return move;
+glm::dvec3 FlyKeys::takeFlight(double now) {
+    for (auto& [key, hold] : held_)
+        if (++hold.frames >= 2 && now > hold.counted) {
+            flight_ += flyAxis(key) * (now - hold.counted);
+            hold.counted = now;
+        }
+    return std::exchange(flight_, glm::dvec3(0.0));
 }
 
 void FlyKeys::clear() {
     held_.clear();
-    tapped_.clear();
+    flight_ = glm::dvec3(0.0);
     shift_ = false;
 }
 

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include <set>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -26,6 +26,7 @@ struct InputEvent {
     int mods = 0;        // GLFW_MOD_* bits
     glm::dvec2 position{0.0};  // CursorMove: window coordinates
     double scroll = 0.0;       // Scroll: wheel notches (y)
+    double time = 0.0;         // seconds (glfwGetTime) when the window system handed it over
 };
 
 // Filled by the window callbacks, drained once per frame (single-threaded: GLFW calls back from
@@ -52,6 +53,9 @@ enum class ViewerAction {
     Screenshot,
     FrameScene,   // Home / F: fit the scene bounds into the view
     ResetCamera,  // R: back to the scene's first camera
+    FlyFaster,    // + (also keypad): fly speed x 1.25
+    FlySlower,    // -: fly speed / 1.25
+    ToggleWalk,   // G: walk mode (the eye kept at its height above the ground)
 };
 
 // The binding of keys to actions (GLFW key codes). Keys that act while a text field has the
@@ -61,19 +65,34 @@ bool actsWhileTyping(ViewerAction action);
 // Settings change of a method action; false for the others.
 bool applyMethodAction(ViewerAction action, Settings& settings);
 
-// Which fly keys are down. A key pressed and released within one frame still counts as held for
-// that frame, so a short tap moves a little instead of nothing.
+// The fly keys, integrated on real elapsed time between the frames that saw them held, not on
+// frame times. A press flies kTapSeconds at once; a key still down at the next frame's events has
+// been held for that whole frame, so from then on each frame flies the time since the last one.
+// A release flies nothing more: the camera stops with the frame that learns of it. Events are
+// only seen when a frame polls them, so a release in the first poll after the press cannot be
+// told from a tap of any length: it is a tap. A tap therefore moves speed x kTapSeconds at 10 fps
+// as at 1 fps (it moved speed x the last frame's time: 54 m at 1.6 s a frame in the forest).
+// Presses with Ctrl, Alt or Super are shortcuts (Ctrl+A), not flight.
 class FlyKeys {
 public:
-    void onKey(int key, int action);
-    // x right (D - A), y up (E - Q), z forward (W - S); then forgets the taps.
-    glm::dvec3 takeMove();
+    // The flight of one tap: at 5 m/s, 0.5 m.
+    static constexpr double kTapSeconds = 0.1;
+    // `time`: when the frame polled the event, on the clock later given to takeFlight.
+    void onKey(int key, int action, int mods, double time);
+    // Seconds flown since the last call (once per frame, after the events) along x right (D - A),
+    // y up (E - Q), z forward (W - S).
+    glm::dvec3 takeFlight(double now);
     bool fast() const { return shift_; }
     bool anyHeld() const { return !held_.empty(); }
     void clear();
 
 private:
-    std::set<int> held_, tapped_;
+    struct Hold {
+        double counted = 0.0;  // flown up to this time
+        int frames = 0;        // takeFlight calls that saw the key down
+    };
+    std::map<int, Hold> held_;
+    glm::dvec3 flight_{0.0};
     bool shift_ = false;
 };
 

@@ -25,6 +25,15 @@ ui::AnimationInfo animationInfo(const Scene& scene) {
 
 // Applies a view state (JSON, or the settings embedded in a screenshot) as a whole or not at all.
 void applyViewFile(ViewerState& state, const std::string& file) {
+    // A screenshot of another scene would put the camera somewhere meaningless here.
+    if (const std::optional<ShotOrigin> origin = readShotOrigin(file); origin && state.scene) {
+        const std::string mismatch = sceneMismatch(file, *origin, state.status.sceneName, state.sceneHash);
+        if (!mismatch.empty()) {
+            state.status.lastError = mismatch;
+            std::cerr << "shadowlab: " << mismatch << "\n";
+            return;
+        }
+    }
     Settings loaded = state.settings;
     std::string error;
     if (!readViewFile(file, loaded, error)) {
@@ -119,6 +128,9 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
         return;
     }
     state.scene = std::move(loaded.scene);
+    state.sceneHash = sceneFileHash(file);
+    state.controller.walkOn = nullptr;  // the eye height was measured in the old scene
+    state.ground.reset();
     state.groundPlane.reset();  // the new scene has none yet; syncGroundPlane adds it if asked
     Scene& scene = *state.scene;
     if (initial) {
@@ -142,7 +154,6 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
     forgetScene(state.accuracy);
     state.status.sceneName = file;
     state.status.sceneTriangles = scene.triangleCount();
-    state.status.lastMessage = "opened " + file;
     state.animation = animationInfo(scene);
     state.controller.pivot = scene.bounds.empty() ? glm::dvec3(0.0) : scene.bounds.center();
     state.file.remember(file);

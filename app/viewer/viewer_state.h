@@ -2,6 +2,7 @@
 // Everything the viewer's loop owns besides the GL objects and the window (app/viewer/viewer.cpp), shared
 // with the open/load handling (app/viewer/viewer_open.h).
 #include "viewer/camera_controller.h"
+#include "viewer/ground_probe.h"
 #include "file_panel.h"
 #include "frame/ground_plane.h"
 #include "panels.h"
@@ -22,6 +23,8 @@ namespace shadowlab::app {
 
 struct ViewerState {
     std::optional<Scene> scene;
+    std::string sceneHash;  // sceneFileHash of the open scene (screenshots name it)
+    std::optional<GroundProbe> ground;  // walk mode's index of the scene, built when first needed
     Settings settings;
     ui::ViewerStatus status;
     ui::ObserverView observer;

@@ -20,12 +20,11 @@ TEST(CameraController, FlyMovesAlongTheViewAxesAtTheSetSpeed) {
     CameraController controller;
     CameraSettings c = startCamera();
     CameraInput in;
-    in.dt = 0.5;
-    in.move = {0.0, 0.0, 1.0};  // W
+    in.flight = {0.0, 0.0, 0.5};  // W held for 0.5 s
     controller.apply(c, in);
     EXPECT_NEAR(c.position.z, 10.0 - 4.0 * 0.5, 1e-9);
     EXPECT_NEAR(c.position.x, 0.0, 1e-9);
-    in.move = {1.0, 0.0, 0.0};  // D: right of -Z is +X
+    in.flight = {0.5, 0.0, 0.0};  // D: right of -Z is +X
     in.fast = true;             // shift: 4x
     controller.apply(c, in);
     EXPECT_NEAR(c.position.x, 4.0 * 4.0 * 0.5, 1e-9);
@@ -85,8 +84,7 @@ TEST(CameraController, LookClampsThePitchShortOfTheVertical) {
     EXPECT_GT(c.pitchDeg, 80.0);
     // Still a valid frame: moving right is well defined.
     in = {};
-    in.dt = 1.0;
-    in.move = {1.0, 0.0, 0.0};
+    in.flight = {1.0, 0.0, 0.0};
     const glm::dvec3 before = c.position;
     controller.apply(c, in);
     EXPECT_TRUE(std::isfinite(c.position.x) && std::isfinite(c.position.z));

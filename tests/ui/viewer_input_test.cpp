@@ -60,18 +60,63 @@ TEST(InputQueue, MethodKeysSetTheMethodAndModifiersDisableThem) {
     EXPECT_FALSE(actsWhileTyping(ViewerAction::SelectPsm));
 }
 
-TEST(FlyKeys, ATapWithinOneFrameStillMovesOnce) {
+// The forward flight of a W tap pressed at a frame's poll and released `tapSeconds` later, with
+// frames `frameSeconds` apart: the viewer sees events only when a frame polls them.
+double tapFlight(double frameSeconds, double tapSeconds) {
     FlyKeys keys;
-    keys.onKey(GLFW_KEY_W, GLFW_PRESS);
-    keys.onKey(GLFW_KEY_W, GLFW_RELEASE);
-    EXPECT_EQ(keys.takeMove(), glm::dvec3(0, 0, 1));
-    EXPECT_EQ(keys.takeMove(), glm::dvec3(0.0));  // released: the next frame stands still
-    keys.onKey(GLFW_KEY_D, GLFW_PRESS);
-    keys.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
-    EXPECT_EQ(keys.takeMove(), glm::dvec3(1, 0, 0));
-    EXPECT_EQ(keys.takeMove(), glm::dvec3(1, 0, 0));  // held
-    EXPECT_TRUE(keys.fast());
+    const double press = 10.0, release = press + tapSeconds;
+    keys.onKey(GLFW_KEY_W, GLFW_PRESS, 0, press);
+    double flown = keys.takeFlight(press).z;
+    for (double t = press + frameSeconds; t < press + 8.0; t += frameSeconds) {
+        if (t >= release && keys.anyHeld()) keys.onKey(GLFW_KEY_W, GLFW_RELEASE, 0, t);
+        flown += keys.takeFlight(t).z;
+    }
+    return flown;
+}
+
+TEST(FlyKeys, ATapFliesTheSameAt10FpsAsAt1Fps) {
+    // A 60 ms tap whose release reaches the next frame: flown for a whole frame before (speed x
+    // 1.6 s at overlay frame times).
+    const double at10 = tapFlight(0.1, 0.06), at1 = tapFlight(1.0, 0.06);
+    EXPECT_NEAR(at10, FlyKeys::kTapSeconds, 0.1 * FlyKeys::kTapSeconds);
+    EXPECT_NEAR(at1, at10, 0.1 * at10);
+    // Press and release within one poll: exactly one tap.
+    FlyKeys keys;
+    keys.onKey(GLFW_KEY_W, GLFW_PRESS, 0, 5.0);
+    keys.onKey(GLFW_KEY_W, GLFW_RELEASE, 0, 5.0);
+    EXPECT_EQ(keys.takeFlight(5.0), glm::dvec3(0, 0, FlyKeys::kTapSeconds));
+    EXPECT_EQ(keys.takeFlight(9.0), glm::dvec3(0.0));  // released: nothing flies on
+}
+
+TEST(FlyKeys, AHeldKeyFliesWhileHeldAndStopsWithTheFrameThatSeesTheRelease) {
+    // Held 3 s: about 3 s of flight whether frames take 0.1 s or 1 s, never more than held.
+    const double at10 = tapFlight(0.1, 3.0), at1 = tapFlight(1.0, 3.0);
+    EXPECT_GT(at10, 2.8);
+    EXPECT_LE(at10, 3.0 + 1e-9);
+    EXPECT_GT(at1, 1.9);  // at most one frame short: the release lands somewhere in the last frame
+    EXPECT_LE(at1, 3.0 + 1e-9);
+    FlyKeys keys;
+    keys.onKey(GLFW_KEY_D, GLFW_PRESS, 0, 1.0);
+    keys.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS, 0, 1.0);
     EXPECT_TRUE(keys.anyHeld());
+    EXPECT_TRUE(keys.fast());
+    EXPECT_NEAR(keys.takeFlight(1.0).x, FlyKeys::kTapSeconds, 1e-12);
+    // Slow frames (1.6 s): each frame that sees the key still down flies the time since the last.
+    EXPECT_NEAR(keys.takeFlight(2.6).x, 1.5, 1e-12);
+    keys.onKey(GLFW_KEY_D, GLFW_RELEASE, 0, 4.2);
+    EXPECT_EQ(keys.takeFlight(4.2), glm::dvec3(0.0));
+    EXPECT_FALSE(keys.anyHeld());
+}
+
+TEST(FlyKeys, ShortcutsWithCtrlDoNotFly) {
+    FlyKeys keys;
+    keys.onKey(GLFW_KEY_A, GLFW_PRESS, GLFW_MOD_CONTROL, 1.0);  // Ctrl+A: select all, not "fly left"
+    keys.onKey(GLFW_KEY_A, GLFW_RELEASE, GLFW_MOD_CONTROL, 1.5);
+    EXPECT_EQ(keys.takeFlight(2.0), glm::dvec3(0.0));
+    EXPECT_FALSE(keys.anyHeld());
+    EXPECT_EQ(actionForKey(GLFW_KEY_EQUAL, GLFW_MOD_SHIFT), ViewerAction::FlyFaster);  // '+'
+    EXPECT_EQ(actionForKey(GLFW_KEY_KP_SUBTRACT, 0), ViewerAction::FlySlower);
+    EXPECT_EQ(actionForKey(GLFW_KEY_G, 0), ViewerAction::ToggleWalk);
 }
 
 TEST(DragTracker, AClickAfterEnteringTheWindowDoesNotMoveTheView) {

@@ -7,9 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -23,6 +25,22 @@ std::string quoted(const fs::path& p) {
     std::string q = "'";
     q.append(p.string()).append("'");
     return q;
+}
+
+// The size and scene a viewer screenshot names (app/view_setup.h writes them).
+struct ShotOrigin {
+    int width = 0, height = 0;
+    std::string scene;
+};
+std::optional<ShotOrigin> readShotOriginForTest(const fs::path& png) {
+    std::string error;
+    const auto scene = readPngTextFromFile(png, "shadowlab-scene", error);
+    const auto size = readPngTextFromFile(png, "shadowlab-view-size", error);
+    if (!scene || !size) return std::nullopt;
+    ShotOrigin origin;
+    origin.scene = *scene;
+    if (std::sscanf(size->c_str(), "%dx%d", &origin.width, &origin.height) != 2) return std::nullopt;
+    return origin;
 }
 
 std::string readFile(const fs::path& file) {
@@ -75,6 +93,23 @@ TEST(ViewerInputUnderXvfb, ADragIsMeasuredFromThePress) {
                              "--no-ui");
     EXPECT_NEAR(s.camera.yawDeg, -80.0, 1e-6);
     EXPECT_NEAR(s.camera.pitchDeg, -10.0, 1e-6);
+}
+
+TEST(ViewerInputUnderXvfb, TheWheelOverThePanelScrollsThePanelNotTheCamera) {
+    // The pointer rests on the picture for a frame, then moves onto the control window (x >= 590
+    // of 960) and the wheel turns in the same instant: last frame's io.WantCaptureMouse still
+    // said "not ImGui's" and the camera dollied ~7 m. (450, 200): right of the Stats window, above
+    // the insets. The real pointer moves (warp), as ImGui asks the X server where it is.
+    const std::string view = R"({"animation": {"playing": false, "time": 0.0},
+        "camera": {"position": [0.0, 3.0, 12.0], "yawDeg": -90.0, "pitchDeg": -10.0}})";
+    const Settings panel = drive("wheel-panel", view,
+                                 "warp:450:200 sleep:1500 warp:800:200 press:4 release:4 press:4 release:4 sleep:500");
+    EXPECT_NEAR(glm::distance(panel.camera.position, glm::dvec3(0.0, 3.0, 12.0)), 0.0, 1e-9);
+    // Over the picture the same wheel turns dolly the camera (the check above can fail; the
+    // viewer before the per-event check dollied 2.4 m in the panel case).
+    const Settings picture =
+        drive("wheel-picture", view, "warp:450:200 sleep:1500 press:4 release:4 press:4 release:4 sleep:500");
+    EXPECT_GT(glm::distance(picture.camera.position, glm::dvec3(0.0, 3.0, 12.0)), 0.1);
 }
 
 TEST(ViewerInputUnderXvfb, ABadSceneOnTheCommandLineOpensTheDefaultSceneWithTheError) {
@@ -132,6 +167,47 @@ TEST(ViewerInputUnderXvfb, F12SavesTheRenderedImageWithItsSettingsAndRenderRepro
             differing += std::abs(a.r - b.r) > 6 || std::abs(a.g - b.g) > 6 || std::abs(a.b - b.b) > 6;
         }
     EXPECT_LT(differing, image.width * image.height / 100);
+
+    // The shot names its scene and its size: `render --view shot.png` alone reproduces it, from
+    // another directory, to a mean difference under half a grey level.
+    const std::optional<ShotOrigin> origin = readShotOriginForTest(shot);
+    ASSERT_TRUE(origin);
+    EXPECT_EQ(origin->width, 590);
+    EXPECT_EQ(origin->height, 540);
+    const fs::path alone = dir / "f12-alone.png", aloneLog = dir / "f12-alone.log";
+    const std::string bare = "cd / && " + quoted(SHADOWLAB_EXE) + " render --view " + quoted(shot) + " --out " +
+                             quoted(alone) + " > " + quoted(aloneLog) + " 2>&1";
+    ASSERT_EQ(std::system(bare.c_str()), 0) << readFile(aloneLog);
+    RgbaImage reproduced;
+    ASSERT_TRUE(readPng(alone, reproduced, error)) << error;
+    ASSERT_EQ(reproduced.width, image.width);
+    ASSERT_EQ(reproduced.height, image.height);
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) sum += std::abs(int(image.at(x, y)[c]) - int(reproduced.at(x, y)[c]));
+    const double mean = sum / (3.0 * image.width * image.height);
+    std::cout << "F12 shot re-rendered from the PNG alone: mean abs difference " << mean << " of 255\n";
+    EXPECT_LT(mean, 0.5);
+
+    // A shot whose scene changed since is refused, not rendered with a meaningless camera.
+    std::vector<unsigned char> bytes;
+    {
+        const std::string text = readFile(shot);
+        bytes.assign(text.begin(), text.end());
+    }
+    ASSERT_TRUE(addPngText(bytes, "shadowlab-scene-hash", "fnv1a64:0000000000000000", error)) << error;
+    const fs::path stale = dir / "f12-stale.png", staleLog = dir / "f12-stale.log";
+    std::ofstream(stale, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    const std::string refused = quoted(SHADOWLAB_EXE) + " render --view " + quoted(stale) + " --out " +
+                                quoted(dir / "f12-stale-out.png") + " > " + quoted(staleLog) + " 2>&1";
+    EXPECT_NE(std::system(refused.c_str()), 0);
+    EXPECT_NE(readFile(staleLog).find("is not the scene"), std::string::npos) << readFile(staleLog);
+    // No scene and a view that names none: a clear message, not a crash or a default.
+    const std::string noScene = quoted(SHADOWLAB_EXE) + " render --view " + quoted(dir / "f12.json") + " --out " +
+                                quoted(dir / "f12-none.png") + " > " + quoted(staleLog) + " 2>&1";
+    EXPECT_NE(std::system(noScene.c_str()), 0);
+    EXPECT_NE(readFile(staleLog).find("no SCENE given"), std::string::npos) << readFile(staleLog);
 }
 
 TEST(ViewerInputUnderXvfb, AbDifferenceOfIdenticalSettingsIsBlackAndRenderCompareSaysZero) {

@@ -7,6 +7,8 @@
 // back to back with one flush, so that key taps are far shorter than a frame:
 //   key:NAME            press and release of the key (an X keysym name: 3, space, F1, Home)
 //   move:X:Y            pointer motion to window coordinates (X, Y)
+//   warp:X:Y            the real pointer moved there (XWarpPointer): what the toolkit reads when
+//                       it asks where the pointer is (ImGui does), with the motion events it makes
 //   press:B / release:B mouse button B (1 left, 3 right) at the last motion position
 //   sleep:MS            flush, then wait MS milliseconds
 //   close               the window manager's close request (WM_DELETE_WINDOW)
@@ -119,6 +121,10 @@ int main(int argc, char** argv) {
             s.key(step.c_str() + 4, KeyRelease);
         } else if (std::sscanf(step.c_str(), "move:%d:%d", &a, &b) == 2) {
             s.motion(a, b);
+        } else if (std::sscanf(step.c_str(), "warp:%d:%d", &a, &b) == 2) {
+            XWarpPointer(d, None, window, 0, 0, 0, 0, a, b);
+            s.x = a;
+            s.y = b;
         } else if (std::sscanf(step.c_str(), "press:%d", &a) == 1) {
             s.button(unsigned(a), ButtonPress);
         } else if (std::sscanf(step.c_str(), "release:%d", &a) == 1) {
