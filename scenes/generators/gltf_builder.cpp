@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <system_error>
@@ -29,6 +30,22 @@ glm::dmat4 localMatrix(const tinygltf::Node& node) {
         m *= glm::toMat4(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
     if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     return m;
+}
+
+// Appends `part` placed by `world`: normals by the inverse transpose (non-uniform scales), the
+// winding turned where `world` mirrors, so front faces stay front faces.
+void appendBaked(MeshData& into, const MeshData& part, const glm::dmat4& world) {
+    const glm::dmat3 linear(world);
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0;
+    const auto base = std::uint32_t(into.positions.size());
+    for (const glm::vec3& p : part.positions) into.positions.push_back(glm::vec3(world * glm::dvec4(glm::dvec3(p), 1.0)));
+    for (const glm::vec3& n : part.normals) into.normals.push_back(glm::vec3(glm::normalize(normalMatrix * glm::dvec3(n))));
+    into.texcoords.insert(into.texcoords.end(), part.texcoords.begin(), part.texcoords.end());
+    const std::vector<std::uint32_t>& idx = part.indices;
+    for (std::size_t t = 0; t + 2 < idx.size(); t += 3)
+        into.indices.insert(into.indices.end(),
+                            {base + idx[t], base + idx[t + (mirrored ? 2 : 1)], base + idx[t + (mirrored ? 1 : 2)]});
 }
 
 }  // namespace
@@ -180,29 +197,18 @@ void GltfBuilder::mergeInstances() {
     // generator grouped its meshes.
     std::vector<StoredPart> merged(model_.materials.size());
     for (std::size_t i = 0; i < merged.size(); ++i) merged[i].material = int(i);
-    std::vector<std::pair<tinygltf::Node, glm::dmat4>> kept;  // camera and light nodes
+    std::vector<std::pair<std::size_t, glm::dmat4>> kept;  // camera and light nodes: index, world
     forEachNode([&](const tinygltf::Node& node, const glm::dmat4& world) {
-        if (node.mesh >= 0) {
-            // Normals by the inverse transpose (non-uniform scales), winding turned for mirrors.
-            const glm::dmat3 linear(world);
-            const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
-            const bool mirrored = glm::determinant(linear) < 0.0;
-            for (const StoredPart& part : meshParts_[std::size_t(node.mesh)]) {
-                MeshData& into = merged[std::size_t(part.material)].data;
-                const auto base = std::uint32_t(into.positions.size());
-                for (const glm::vec3& p : part.data.positions)
-                    into.positions.push_back(glm::vec3(world * glm::dvec4(glm::dvec3(p), 1.0)));
-                for (const glm::vec3& n : part.data.normals)
-                    into.normals.push_back(glm::vec3(glm::normalize(normalMatrix * glm::dvec3(n))));
-                into.texcoords.insert(into.texcoords.end(), part.data.texcoords.begin(), part.data.texcoords.end());
-                const std::vector<std::uint32_t>& idx = part.data.indices;
-                for (std::size_t t = 0; t + 2 < idx.size(); t += 3)
-                    into.indices.insert(into.indices.end(), {base + idx[t], base + idx[t + (mirrored ? 2 : 1)],
-                                                             base + idx[t + (mirrored ? 1 : 2)]});
-            }
-        }
-        if (node.camera >= 0 || node.extensions.count("KHR_lights_punctual")) kept.emplace_back(node, world);
+        if (node.mesh >= 0)
+            for (const StoredPart& part : meshParts_[std::size_t(node.mesh)])
+                appendBaked(merged[std::size_t(part.material)].data, part.data, world);
+        if (node.camera >= 0 || node.extensions.count("KHR_lights_punctual"))
+            kept.emplace_back(std::size_t(&node - model_.nodes.data()), world);
     });
+    // In their original order: the loader numbers cameras in node order ("--camera 0").
+    std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<tinygltf::Node> keptNodes;
+    for (const auto& [index, world] : kept) keptNodes.push_back(model_.nodes[index]);
     std::erase_if(merged, [](const StoredPart& part) { return part.data.indices.empty(); });
 
     model_.meshes.clear();
@@ -215,7 +221,9 @@ void GltfBuilder::mergeInstances() {
     meshTriangles_.clear();
     const int mesh = addStoredMesh("World_Merged", std::move(merged));
     setMesh(addNode("World_Merged", {}), mesh);
-    for (auto& [node, world] : kept) {
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        tinygltf::Node& node = keptNodes[i];
+        const glm::dmat4& world = kept[i].second;
         node.children.clear();
         if (world != localMatrix(node)) {  // under a parent: placed by its world matrix (no scale)
             const glm::dquat rotation = glm::normalize(glm::quat_cast(glm::dmat3(world)));

@@ -141,7 +141,13 @@ TEST_P(MergedScene, IsOneMeshWithTheSameTrianglesMaterialsCamerasAndLights) {
     EXPECT_TRUE(a.model.materials == b.model.materials);
     EXPECT_TRUE(a.model.cameras == b.model.cameras);
     EXPECT_TRUE(a.model.lights == b.model.lights);
-    // Cameras and lights where they were.
+    // Cameras and lights where they were, in the same order ("--camera 0" is the same view).
+    std::vector<std::string> placedBefore, placedAfter;
+    for (const InspectedNode& n : a.nodes)
+        if (n.camera >= 0 || n.light >= 0) placedBefore.push_back(n.name);
+    for (const InspectedNode& n : b.nodes)
+        if (n.camera >= 0 || n.light >= 0) placedAfter.push_back(n.name);
+    EXPECT_EQ(placedAfter, placedBefore);
     for (const InspectedNode& n : a.nodes) {
         if (n.camera < 0 && n.light < 0) continue;
         const InspectedNode* m = b.node(n.name);
