@@ -33,11 +33,13 @@ void buildStreet(GltfBuilder& builder, const GenerateOptions& options) {
 
     // Ground: grass wider than the street block, the asphalt road 12 m wide (2 cm above the
     // grass) and two 4 m sidewalks 15 cm high (kerbs throw thin shadows along the street). Each
-    // is cut into tiles of about 100 m along the street, each its own mesh and node, so a view down
-    // the street or a light's frustum can skip the stretches it does not reach.
+    // is cut into equal tiles of at most 500 m along the street, each its own mesh and node, so a
+    // light's frustum or a view that does not reach a whole long street can skip stretches. Long
+    // tiles: the cameras see the whole street (far = its length), so every tile is one more draw.
+    constexpr double kTileLength = 500.0;
     const float gx = 120.0f, gz = float(halfLength + 60.0), rz = float(halfLength + 20.0);
     auto addTiles = [&](const std::string& name, float half, int material, auto makeTile) {
-        const int tiles = std::max(1, int(std::ceil(2.0 * half / 100.0)));
+        const int tiles = std::max(1, int(std::ceil(2.0 * half / kTileLength)));
         std::vector<int> meshes;
         for (int i = 0; i < tiles; ++i) {
             const float z0 = -half + 2.0f * half * float(i) / float(tiles);
