@@ -1,4 +1,4 @@
-// shadowlab generate NAME --out FILE.glb [--seed S] [--scale X] [--skybox]: writes one of the generated
+// shadowlab generate NAME --out FILE.glb [--seed S] [--scale X] [--skybox] [--merge]: writes one of the generated
 // test worlds (scenes/README.md) as binary glTF. Deterministic: same seed and scale, same bytes.
 #include "commands.h"
 #include "scenes/generators/scene_generators.h"
@@ -21,6 +21,7 @@ struct GenerateCommandOptions {
     std::uint64_t seed = 1;
     double scale = 1.0;
     bool skyBox = false;
+    bool merge = false;
 };
 
 void runGenerate(const GenerateCommandOptions& options) {
@@ -28,6 +29,7 @@ void runGenerate(const GenerateCommandOptions& options) {
     generateOptions.seed = options.seed;
     generateOptions.scale = options.scale;
     generateOptions.skyBox = options.skyBox;
+    generateOptions.merge = options.merge;
     const auto start = std::chrono::steady_clock::now();
     const scenegen::GenerateResult result = scenegen::generateScene(options.name, generateOptions, options.out);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -36,10 +38,11 @@ void runGenerate(const GenerateCommandOptions& options) {
         throw CLI::RuntimeError(1);
     }
     const scenegen::SceneStats& s = result.stats;
-    std::printf("wrote %s (%s%s, seed %llu, scale %g): %zu nodes, %zu mesh instances, %zu triangles drawn, "
+    std::printf("wrote %s (%s%s%s, seed %llu, scale %g): %zu nodes, %zu mesh instances, %zu triangles drawn, "
                 "%zu meshes, %zu materials, %zu cameras, %zu lights\n"
                 "bounds (%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f), %.1f MB, %.2f s\n",
-                options.out.c_str(), options.name.c_str(), options.skyBox ? " in a sky box" : "",
+                options.out.c_str(), options.name.c_str(), options.merge ? " merged into one mesh" : "",
+                options.skyBox ? " in a sky box" : "",
                 static_cast<unsigned long long>(options.seed), options.scale, s.nodes, s.meshInstances, s.triangles,
                 s.meshes, s.materials, s.cameras, s.lights, s.boundsMin.x, s.boundsMin.y, s.boundsMin.z, s.boundsMax.x,
                 s.boundsMax.y, s.boundsMax.z, double(s.fileBytes) / 1e6, seconds);
@@ -64,6 +67,9 @@ void addGenerateCommand(CLI::App& app) {
     cmd->add_flag("--skybox", options->skyBox,
                   "wrap the scene in a closed, textured, single-sided sky box facing inwards (node SkyBox) that "
                   "encloses everything drawn, the cameras and the positioned lights");
+    cmd->add_flag("--merge", options->merge,
+                  "write the whole scene as one mesh (node World_Merged): every instance baked into world space, "
+                  "one primitive per material; cameras and lights kept");
     std::string scenes = "Scenes (scenes/README.md):\n";
     for (const scenegen::GeneratorInfo& g : scenegen::generators()) scenes += "  " + g.name + ": " + g.summary + "\n";
     cmd->footer(scenes);

@@ -41,8 +41,19 @@ void buildForest(GltfBuilder& builder, const GenerateOptions& options) {
     const int firLeaves = builder.addMaterial("Leaves_Fir", {0.04f, 0.18f, 0.14f, 1.0f});
     const int autumnLeaves = builder.addMaterial("Leaves_Autumn", {0.75f, 0.33f, 0.07f, 1.0f});
 
-    const MeshData terrain = grid.mesh();
-    const int terrainMesh = builder.addMesh("Terrain", {{&terrain, grass}});
+    // The terrain as square tiles of the grid, each its own mesh and node under "Terrain": the same
+    // surface, normals and triangle count as one grid mesh, but a view or a light that reaches only
+    // part of the world can skip whole tiles.
+    constexpr int kTileCells = 32;  // 64 m tiles of 2,048 triangles
+    std::vector<std::pair<std::string, int>> terrainTiles;
+    for (int k0 = 0; k0 < cells; k0 += kTileCells)
+        for (int i0 = 0; i0 < cells; i0 += kTileCells) {
+            const MeshData tile =
+                grid.mesh(i0, k0, std::min(i0 + kTileCells, cells), std::min(k0 + kTileCells, cells));
+            const std::string name = "Terrain_" + padded(std::size_t(k0 / kTileCells), 2) + "_" +
+                                     padded(std::size_t(i0 / kTileCells), 2);
+            terrainTiles.emplace_back(name, builder.addMesh(name, {{&tile, grass}}));
+        }
 
     // Tree variants, origin at the foot of the trunk; trunks reach 0.5 m below it so they stay
     // in the ground on slopes. Triangles per variant are listed in scenes/README.md.
@@ -110,7 +121,8 @@ void buildForest(GltfBuilder& builder, const GenerateOptions& options) {
     };
 
     // Terrain and trees.
-    builder.setMesh(builder.addNode("Terrain", {}), terrainMesh);
+    const int terrainGroup = builder.addNode("Terrain", {});
+    for (const auto& [name, mesh] : terrainTiles) builder.setMesh(builder.addNode(name, {}, terrainGroup), mesh);
     const int treesGroup = builder.addNode("Trees", {});
     PlacementGrid spacing(2.0);  // trunks at least 2 m apart
     const double margin = 3.0;

@@ -32,22 +32,37 @@ void buildStreet(GltfBuilder& builder, const GenerateOptions& options) {
                                      {0.03f, 0.03f, 0.03f, 1.0f}};
 
     // Ground: grass wider than the street block, the asphalt road 12 m wide (2 cm above the
-    // grass) and two 4 m sidewalks 15 cm high (kerbs throw thin shadows along the street).
-    MeshData ground;
-    const float gx = 120.0f, gz = float(halfLength + 60.0);
-    ground.positions = {{-gx, 0, -gz}, {-gx, 0, gz}, {gx, 0, gz}, {gx, 0, -gz}};
-    ground.normals.assign(4, glm::vec3(0, 1, 0));
-    ground.indices = {0, 1, 2, 0, 2, 3};
-    MeshData road;
-    const float rz = float(halfLength + 20.0);
-    road.positions = {{-6, 0.02f, -rz}, {-6, 0.02f, rz}, {6, 0.02f, rz}, {6, 0.02f, -rz}};
-    road.normals.assign(4, glm::vec3(0, 1, 0));
-    road.indices = {0, 1, 2, 0, 2, 3};
-    MeshData sidewalks = box({-10.0f, 0.0f, -rz}, {-6.0f, 0.15f, rz});
-    sidewalks.append(box({6.0f, 0.0f, -rz}, {10.0f, 0.15f, rz}));
-    const int groundMesh = builder.addMesh("Ground", {{&ground, groundMaterial}});
-    const int roadMesh = builder.addMesh("Road", {{&road, roadMaterial}});
-    const int sidewalkMesh = builder.addMesh("Sidewalks", {{&sidewalks, sidewalkMaterial}});
+    // grass) and two 4 m sidewalks 15 cm high (kerbs throw thin shadows along the street). Each
+    // is cut into equal tiles of at most 500 m along the street, each its own mesh and node, so a
+    // light's frustum or a view that does not reach a whole long street can skip stretches. Long
+    // tiles: the cameras see the whole street (far = its length), so every tile is one more draw.
+    constexpr double kTileLength = 500.0;
+    const float gx = 120.0f, gz = float(halfLength + 60.0), rz = float(halfLength + 20.0);
+    auto addTiles = [&](const std::string& name, float half, int material, auto makeTile) {
+        const int tiles = std::max(1, int(std::ceil(2.0 * half / kTileLength)));
+        std::vector<int> meshes;
+        for (int i = 0; i < tiles; ++i) {
+            const float z0 = -half + 2.0f * half * float(i) / float(tiles);
+            const float z1 = i + 1 == tiles ? half : -half + 2.0f * half * float(i + 1) / float(tiles);
+            const MeshData tile = makeTile(z0, z1);
+            meshes.push_back(builder.addMesh(name + "_" + padded(std::size_t(i), 3), {{&tile, material}}));
+        }
+        return meshes;
+    };
+    auto flat = [](float x0, float x1, float y) {
+        return [=](float z0, float z1) {
+            MeshData m;
+            m.addQuad({x0, y, z0}, {x0, y, z1}, {x1, y, z1}, {x1, y, z0}, {0, 1, 0});
+            return m;
+        };
+    };
+    const std::vector<int> groundMeshes = addTiles("Ground", gz, groundMaterial, flat(-gx, gx, 0.0f));
+    const std::vector<int> roadMeshes = addTiles("Road", rz, roadMaterial, flat(-6.0f, 6.0f, 0.02f));
+    const std::vector<int> sidewalkMeshes = addTiles("Sidewalks", rz, sidewalkMaterial, [](float z0, float z1) {
+        MeshData m = box({-10.0f, 0.0f, z0}, {-6.0f, 0.15f, z1});
+        m.append(box({6.0f, 0.0f, z0}, {10.0f, 0.15f, z1}));
+        return m;
+    });
 
     // Buildings: unit boxes standing on y = 0, scaled per building.
     const MeshData unitBuilding = box({-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f});
@@ -71,9 +86,13 @@ void buildStreet(GltfBuilder& builder, const GenerateOptions& options) {
         carMeshes[i] = builder.addMesh(std::string("Car_") + carNames[i],
                                        {{&carBody, builder.addMaterial(std::string("Car_") + carNames[i], carColours[i], 0.4f)}});
 
-    builder.setMesh(builder.addNode("Ground", {}), groundMesh);
-    builder.setMesh(builder.addNode("Road", {}), roadMesh);
-    builder.setMesh(builder.addNode("Sidewalks", {}), sidewalkMesh);
+    const std::pair<const char*, const std::vector<int>*> tileGroups[] = {
+        {"Ground", &groundMeshes}, {"Road", &roadMeshes}, {"Sidewalks", &sidewalkMeshes}};
+    for (const auto& [group, meshes] : tileGroups) {
+        const int parent = builder.addNode(group, {});
+        for (const int mesh : *meshes)
+            builder.setMesh(builder.addNode(builder.model().meshes[std::size_t(mesh)].name, {}, parent), mesh);
+    }
 
     const int buildingsGroup = builder.addNode("Buildings", {});
     std::size_t buildingIndex = 0;

@@ -137,8 +137,10 @@ GenerateResult generateScene(const std::string& name, const GenerateOptions& opt
     }
     try {
         GltfBuilder builder("shadowlab scenegen: " + name + " seed " + std::to_string(options.seed) + " scale " +
-                            formatScale(options.scale) + (options.skyBox ? " sky box" : ""));
+                            formatScale(options.scale) + (options.merge ? " merged" : "") +
+                            (options.skyBox ? " sky box" : ""));
         entry->build(builder, options);
+        if (options.merge) builder.mergeInstances();
         if (options.skyBox) addSkyBox(builder);
         result.ok = builder.write(out, result.stats, result.error);
     } catch (const std::exception& e) {  // allocation failure on huge scales, filesystem errors

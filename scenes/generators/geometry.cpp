@@ -159,11 +159,15 @@ double HeightGrid::surfaceHeight(double x, double z) const {
     return h00 + u * (h10 - h00) + v * (h11 - h10);
 }
 
-MeshData HeightGrid::mesh() const {
+MeshData HeightGrid::mesh() const { return mesh(0, 0, cellsX, cellsZ); }
+
+MeshData HeightGrid::mesh(int i0, int k0, int i1, int k1) const {
     MeshData m;
-    const auto row = std::uint32_t(cellsX + 1);
-    for (int k = 0; k <= cellsZ; ++k)
-        for (int i = 0; i <= cellsX; ++i) {
+    const auto row = std::uint32_t(i1 - i0 + 1);
+    for (int k = k0; k <= k1; ++k)
+        for (int i = i0; i <= i1; ++i) {
+            // Normals from the whole grid's neighbours: a tile's border vertices get the normals
+            // the untiled mesh has there, so tiles meet without a crease.
             const int il = std::max(i - 1, 0), ir = std::min(i + 1, cellsX);
             const int kl = std::max(k - 1, 0), kr = std::min(k + 1, cellsZ);
             const double dhdx = (at(ir, k) - at(il, k)) / ((ir - il) * cellX);
@@ -171,8 +175,8 @@ MeshData HeightGrid::mesh() const {
             m.positions.push_back(glm::vec3(float(x0 + i * cellX), float(at(i, k)), float(z0 + k * cellZ)));
             m.normals.push_back(glm::vec3(glm::normalize(glm::dvec3(-dhdx, 1.0, -dhdz))));
         }
-    for (int k = 0; k < cellsZ; ++k)
-        for (int i = 0; i < cellsX; ++i) {
+    for (int k = 0; k < k1 - k0; ++k)
+        for (int i = 0; i < i1 - i0; ++i) {
             const std::uint32_t v00 = std::uint32_t(k) * row + std::uint32_t(i), v10 = v00 + 1;
             const std::uint32_t v01 = v00 + row, v11 = v01 + 1;
             // Counter-clockwise seen from above (+Y): (00, 01, 11) and (00, 11, 10).

@@ -63,6 +63,8 @@ struct HeightGrid {
     double at(int i, int k) const { return heights[std::size_t(k) * std::size_t(cellsX + 1) + std::size_t(i)]; }
     double surfaceHeight(double x, double z) const;  // clamped to the grid
     MeshData mesh() const;
+    // The cells [i0, i1) x [k0, k1) only, with the whole grid's normals (tiles of mesh()).
+    MeshData mesh(int i0, int k0, int i1, int k1) const;
 };
 
 }  // namespace shadowlab::scenegen

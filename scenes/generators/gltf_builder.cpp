@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <algorithm>
 #include <limits>
+#include <stdexcept>
 #include <system_error>
 
 namespace shadowlab::scenegen {
@@ -28,6 +30,22 @@ glm::dmat4 localMatrix(const tinygltf::Node& node) {
         m *= glm::toMat4(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
     if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     return m;
+}
+
+// Appends `part` placed by `world`: normals by the inverse transpose (non-uniform scales), the
+// winding turned where `world` mirrors, so front faces stay front faces.
+void appendBaked(MeshData& into, const MeshData& part, const glm::dmat4& world) {
+    const glm::dmat3 linear(world);
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0;
+    const auto base = std::uint32_t(into.positions.size());
+    for (const glm::vec3& p : part.positions) into.positions.push_back(glm::vec3(world * glm::dvec4(glm::dvec3(p), 1.0)));
+    for (const glm::vec3& n : part.normals) into.normals.push_back(glm::vec3(glm::normalize(normalMatrix * glm::dvec3(n))));
+    into.texcoords.insert(into.texcoords.end(), part.texcoords.begin(), part.texcoords.end());
+    const std::vector<std::uint32_t>& idx = part.indices;
+    for (std::size_t t = 0; t + 2 < idx.size(); t += 3)
+        into.indices.insert(into.indices.end(),
+                            {base + idx[t], base + idx[t + (mirrored ? 2 : 1)], base + idx[t + (mirrored ? 1 : 2)]});
 }
 
 }  // namespace
@@ -122,12 +140,17 @@ int GltfBuilder::addAccessor(const void* data, std::size_t bytes, int componentT
 }
 
 int GltfBuilder::addMesh(const std::string& name, const std::vector<Part>& parts) {
+    std::vector<StoredPart> stored;
+    for (const Part& part : parts) stored.push_back({*part.data, part.material});
+    return addStoredMesh(name, std::move(stored));
+}
+
+int GltfBuilder::addStoredMesh(const std::string& name, std::vector<StoredPart> parts) {
     tinygltf::Mesh mesh;
     mesh.name = name;
-    MeshData merged;
     std::size_t triangles = 0;
-    for (const Part& part : parts) {
-        const MeshData& d = *part.data;
+    for (const StoredPart& part : parts) {
+        const MeshData& d = part.data;
         tinygltf::Primitive primitive;
         primitive.mode = TINYGLTF_MODE_TRIANGLES;
         primitive.material = part.material;
@@ -160,13 +183,58 @@ int GltfBuilder::addMesh(const std::string& name, const std::vector<Part>& parts
                                             TINYGLTF_TYPE_SCALAR, d.indices.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
         }
         mesh.primitives.push_back(primitive);
-        merged.append(d);
         triangles += d.triangleCount();
     }
     model_.meshes.push_back(mesh);
-    meshGeometry_.push_back(std::move(merged));
+    meshParts_.push_back(std::move(parts));
     meshTriangles_.push_back(triangles);
     return int(model_.meshes.size()) - 1;
+}
+
+void GltfBuilder::mergeInstances() {
+    if (!model_.images.empty()) throw std::logic_error("merging a scene that holds images is not supported");
+    // One part per material, in material order, so the merged file does not depend on how the
+    // generator grouped its meshes.
+    std::vector<StoredPart> merged(model_.materials.size());
+    for (std::size_t i = 0; i < merged.size(); ++i) merged[i].material = int(i);
+    std::vector<std::pair<std::size_t, glm::dmat4>> kept;  // camera and light nodes: index, world
+    forEachNode([&](const tinygltf::Node& node, const glm::dmat4& world) {
+        if (node.mesh >= 0)
+            for (const StoredPart& part : meshParts_[std::size_t(node.mesh)])
+                appendBaked(merged[std::size_t(part.material)].data, part.data, world);
+        if (node.camera >= 0 || node.extensions.count("KHR_lights_punctual"))
+            kept.emplace_back(std::size_t(&node - model_.nodes.data()), world);
+    });
+    // In their original order: the loader numbers cameras in node order ("--camera 0").
+    std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<tinygltf::Node> keptNodes;
+    for (const auto& [index, world] : kept) keptNodes.push_back(model_.nodes[index]);
+    std::erase_if(merged, [](const StoredPart& part) { return part.data.indices.empty(); });
+
+    model_.meshes.clear();
+    model_.accessors.clear();
+    model_.bufferViews.clear();
+    model_.buffers[0].data.clear();
+    model_.nodes.clear();
+    model_.scenes[0].nodes.clear();
+    meshParts_.clear();
+    meshTriangles_.clear();
+    const int mesh = addStoredMesh("World_Merged", std::move(merged));
+    setMesh(addNode("World_Merged", {}), mesh);
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        tinygltf::Node& node = keptNodes[i];
+        const glm::dmat4& world = kept[i].second;
+        node.children.clear();
+        if (world != localMatrix(node)) {  // under a parent: placed by its world matrix (no scale)
+            const glm::dquat rotation = glm::normalize(glm::quat_cast(glm::dmat3(world)));
+            node.translation = {roundTo(world[3].x, 4), roundTo(world[3].y, 4), roundTo(world[3].z, 4)};
+            node.rotation = {roundTo(rotation.x, 7), roundTo(rotation.y, 7), roundTo(rotation.z, 7), roundTo(rotation.w, 7)};
+            node.scale.clear();
+            node.matrix.clear();
+        }
+        model_.nodes.push_back(node);
+        model_.scenes[0].nodes.push_back(int(model_.nodes.size()) - 1);
+    }
 }
 
 int GltfBuilder::addPerspectiveCamera(const std::string& name, double yfov, double znear, double zfar) {
@@ -267,11 +335,12 @@ bool GltfBuilder::drawnBounds(glm::dvec3& lo, glm::dvec3& hi) const {
     forEachNode([&](const tinygltf::Node& node, const glm::dmat4& world) {
         if (node.mesh < 0) return;
         any = true;
-        for (const glm::vec3& p : meshGeometry_[std::size_t(node.mesh)].positions) {
-            const glm::dvec3 w = glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0));
-            lo = glm::min(lo, w);
-            hi = glm::max(hi, w);
-        }
+        for (const StoredPart& part : meshParts_[std::size_t(node.mesh)])
+            for (const glm::vec3& p : part.data.positions) {
+                const glm::dvec3 w = glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0));
+                lo = glm::min(lo, w);
+                hi = glm::max(hi, w);
+            }
     });
     return any;
 }
@@ -283,7 +352,8 @@ bool GltfBuilder::write(const std::filesystem::path& out, SceneStats& stats, std
     stats.materials = model_.materials.size();
     stats.cameras = model_.cameras.size();
     stats.lights = model_.lights.size();
-    for (const MeshData& m : meshGeometry_) stats.vertices += m.positions.size();
+    for (const std::vector<StoredPart>& parts : meshParts_)
+        for (const StoredPart& part : parts) stats.vertices += part.data.positions.size();
     forEachNode([&](const tinygltf::Node& node, const glm::dmat4&) {
         if (node.mesh < 0) return;
         ++stats.meshInstances;

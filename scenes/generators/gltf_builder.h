@@ -40,6 +40,11 @@ public:
         int material;
     };
     int addMesh(const std::string& name, const std::vector<Part>& parts);
+    // Bakes every drawn mesh instance into world space and replaces all meshes and mesh nodes by one
+    // mesh "World_Merged" (one primitive per material, in material order) drawn by one root node;
+    // camera and light nodes stay, as roots at their world placement. Materials are kept; the
+    // model must hold no images yet (their bytes share the buffer that is rebuilt).
+    void mergeInstances();
     int addPerspectiveCamera(const std::string& name, double yfov, double znear, double zfar);
     int addDirectionalLight(const std::string& name, glm::dvec3 color, double intensity);
     int addSpotLight(const std::string& name, glm::dvec3 color, double intensity, double range, double innerCone,
@@ -66,10 +71,15 @@ public:
     const tinygltf::Model& model() const { return model_; }
 
 private:
+    struct StoredPart {
+        MeshData data;
+        int material;
+    };
     int addAccessor(const void* data, std::size_t bytes, int componentType, int type, std::size_t count, int target);
+    int addStoredMesh(const std::string& name, std::vector<StoredPart> parts);
 
     tinygltf::Model model_;
-    std::vector<MeshData> meshGeometry_;  // per mesh, all parts merged, for bounds
+    std::vector<std::vector<StoredPart>> meshParts_;  // per mesh, for bounds and merging
     std::vector<std::size_t> meshTriangles_;
 };
 

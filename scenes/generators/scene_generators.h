@@ -18,6 +18,9 @@ struct GenerateOptions {
     // Wrap the scene in a closed, textured, single-sided sky box facing inwards (node "SkyBox"),
     // large enough to enclose everything drawn, every camera and every positioned light.
     bool skyBox = false;
+    // Write the scene as one huge mesh: every mesh instance baked into world space, one primitive
+    // per material, one node "World_Merged" (cameras and lights kept; a sky box stays its own node).
+    bool merge = false;
 };
 
 // What the written file contains, counted by the generator while building it.

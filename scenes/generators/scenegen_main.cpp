@@ -1,4 +1,4 @@
-// shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X] [--skybox]: writes one generated scene. Used by the
+// shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X] [--skybox] [--merge]: writes one generated scene. Used by the
 // build (default_scenes) and links only the generator library, never the GL renderer.
 #include "scene_generators.h"
 
@@ -13,7 +13,7 @@ namespace {
 
 int usage(const char* message) {
     if (message) std::cerr << "shadowlab-scenegen: " << message << "\n";
-    std::cerr << "usage: shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X] [--skybox]\n"
+    std::cerr << "usage: shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X] [--skybox] [--merge]\n"
               << "scenes: " << shadowlab::scenegen::generatorNameList() << "\n";
     return 2;
 }
@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
             if (!parseDouble(i + 1 < argc ? argv[++i] : nullptr, options.scale)) return usage("--scale needs a number");
         } else if (arg == "--skybox") {
             options.skyBox = true;
+        } else if (arg == "--merge") {
+            options.merge = true;
         } else if (!arg.empty() && arg[0] == '-') {
             return usage(("unknown option " + arg).c_str());
         } else if (name.empty()) {

@@ -62,6 +62,17 @@ TEST(GenerateCommand, SkyBoxFlagWrapsTheSceneAndSaysSo) {
     EXPECT_EQ(b.meshInstances, a.meshInstances + 1);
 }
 
+TEST(GenerateCommand, MergeFlagWritesOneMeshAndSaysSo) {
+    const fs::path merged = outDir() / "street-merged.glb";
+    testing::internal::CaptureStdout();
+    EXPECT_EQ(runShadowlab({"generate", "street", "--scale", "0.1", "--merge", "--out", merged.string()}), 0);
+    const std::string printed = testing::internal::GetCapturedStdout();
+    EXPECT_NE(printed.find("street merged into one mesh"), std::string::npos) << printed;
+    const Inspected f = inspect(merged, false);
+    EXPECT_EQ(f.meshInstances, 1u);
+    ASSERT_NE(f.node("World_Merged"), nullptr);
+}
+
 TEST(GenerateCommand, UnknownNameListsTheValidNamesAndFails) {
     testing::internal::CaptureStderr();
     const int code = runShadowlab({"generate", "jungle", "--out", (outDir() / "jungle.glb").string()});

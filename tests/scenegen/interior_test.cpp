@@ -1,8 +1,7 @@
 // The closed interior (generate interior) and the sky box any scene can be wrapped in (--skybox):
 // shells closed and facing inwards, cameras inside, the sun striped by the blind on the floor, and
 // a sky box that encloses the scene it wraps without changing anything else.
-#include "gltf_inspect.h"
-#include "scenes/generators/scene_generators.h"
+#include "generated_scenes.h"
 #include "scenes/image_decode.h"
 
 #include <gtest/gtest.h>
@@ -19,59 +18,12 @@ namespace {
 namespace fs = std::filesystem;
 using scenegen::GenerateOptions;
 using scenegen::GenerateResult;
-using Triangle = std::array<glm::dvec3, 3>;
 
-fs::path tempDir() {
-    const fs::path dir = fs::path(::testing::TempDir()) / ("shadowlab_interior_tests_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    static const struct Cleanup {
-        fs::path path;
-        ~Cleanup() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    } cleanup{dir};
-    return dir;
-}
-
-struct Generated {
-    GenerateResult result;
-    fs::path file;
-    Inspected inspected;
-};
-
-// Generated once per (name, scale, sky box) for the whole suite.
-const Generated& scene(const std::string& name, bool skyBox, double scale = 1.0) {
-    static std::map<std::tuple<std::string, bool, double>, Generated> cache;
-    const auto key = std::make_tuple(name, skyBox, scale);
-    if (auto it = cache.find(key); it != cache.end()) return it->second;
-    Generated g;
-    g.file = tempDir() / (name + (skyBox ? "-skybox-" : "-") + std::to_string(scale) + ".glb");
+const GeneratedScene& scene(const std::string& name, bool skyBox, double scale = 1.0) {
     GenerateOptions options;
     options.scale = scale;
     options.skyBox = skyBox;
-    g.result = scenegen::generateScene(name, options, g.file);
-    if (g.result.ok) g.inspected = inspect(g.file);
-    return cache.emplace(key, std::move(g)).first->second;
-}
-
-// World-space triangles of every mesh node, or only of the node called `only`.
-std::vector<Triangle> worldTriangles(const Inspected& f, const std::string& only = {}) {
-    std::vector<Triangle> out;
-    for (const InspectedNode& n : f.nodes) {
-        if (n.mesh < 0 || (!only.empty() && n.name != only)) continue;
-        for (const tinygltf::Primitive& p : f.model.meshes[std::size_t(n.mesh)].primitives) {
-            const auto pos = readVec3(f.model, p.attributes.at("POSITION"));
-            const auto idx = readIndices(f.model, p.indices);
-            for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
-                Triangle tri;
-                for (std::size_t k = 0; k < 3; ++k)
-                    tri[k] = glm::dvec3(n.world * glm::dvec4(glm::dvec3(pos[idx[t + k]]), 1.0));
-                out.push_back(tri);
-            }
-        }
-    }
-    return out;
+    return generatedScene(name, options);
 }
 
 glm::dvec3 faceNormal(const Triangle& t) { return glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0])); }
@@ -163,7 +115,7 @@ OpenEdges openEdges(const std::vector<Triangle>& triangles) {
 // ---------- interior ----------
 
 TEST(InteriorScene, ShellIsClosedAndConsistentlyWoundExceptTheWindowRim) {
-    const Generated& g = scene("interior", false);
+    const GeneratedScene& g = scene("interior", false);
     ASSERT_TRUE(g.result.ok) << g.result.error;
     const auto shell = worldTriangles(g.inspected, "Room_Shell");
     ASSERT_FALSE(shell.empty());
@@ -187,7 +139,7 @@ TEST(InteriorScene, ShellIsClosedAndConsistentlyWoundExceptTheWindowRim) {
 }
 
 TEST(InteriorScene, ShellIsSingleSidedWithEveryFaceLookingIntoTheRoom) {
-    const Generated& g = scene("interior", false);
+    const GeneratedScene& g = scene("interior", false);
     ASSERT_TRUE(g.result.ok) << g.result.error;
     const auto shell = worldTriangles(g.inspected, "Room_Shell");
     glm::dvec3 lo, hi;
@@ -203,7 +155,7 @@ TEST(InteriorScene, ShellIsSingleSidedWithEveryFaceLookingIntoTheRoom) {
 }
 
 TEST(InteriorScene, CamerasStandInsideTheRoomAndOneSeesTheSunPatch) {
-    const Generated& g = scene("interior", false);
+    const GeneratedScene& g = scene("interior", false);
     ASSERT_TRUE(g.result.ok) << g.result.error;
     const Inspected& f = g.inspected;
     const auto shell = worldTriangles(f, "Room_Shell");
@@ -233,7 +185,7 @@ TEST(InteriorScene, CamerasStandInsideTheRoomAndOneSeesTheSunPatch) {
 }
 
 TEST(InteriorScene, SunEntersOnlyThroughTheWindowAndTheBlindStripesThePatch) {
-    const Generated& g = scene("interior", false);
+    const GeneratedScene& g = scene("interior", false);
     ASSERT_TRUE(g.result.ok) << g.result.error;
     const Inspected& f = g.inspected;
     const auto all = worldTriangles(f), shell = worldTriangles(f, "Room_Shell");
@@ -272,8 +224,8 @@ class SkyBox : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SkyBox, EnclosesTheSceneItsCamerasAndLightsAndFacesInwards) {
     const double scale = GetParam() == "street" ? 0.1 : 1.0;
-    const Generated& plain = scene(GetParam(), false, scale);
-    const Generated& boxed = scene(GetParam(), true, scale);
+    const GeneratedScene& plain = scene(GetParam(), false, scale);
+    const GeneratedScene& boxed = scene(GetParam(), true, scale);
     ASSERT_TRUE(plain.result.ok && boxed.result.ok) << plain.result.error << boxed.result.error;
     const Inspected &a = plain.inspected, &b = boxed.inspected;
     // Everything else is unchanged: one more node, mesh, material and 12 triangles.
@@ -305,7 +257,7 @@ TEST_P(SkyBox, EnclosesTheSceneItsCamerasAndLightsAndFacesInwards) {
 
 TEST_P(SkyBox, IsOneSingleSidedMaterialWithASmallEmbeddedPngTexture) {
     const double scale = GetParam() == "street" ? 0.1 : 1.0;
-    const Generated& boxed = scene(GetParam(), true, scale);
+    const GeneratedScene& boxed = scene(GetParam(), true, scale);
     ASSERT_TRUE(boxed.result.ok) << boxed.result.error;
     const tinygltf::Model& m = boxed.inspected.model;
     const InspectedNode* node = boxed.inspected.node("SkyBox");
@@ -349,7 +301,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SkyBox, ::testing::Values("interior", "plane-bo
                          });
 
 TEST(SkyBoxOption, SameOptionsGiveByteIdenticalFiles) {
-    const Generated& first = scene("interior", true);
+    const GeneratedScene& first = scene("interior", true);
     ASSERT_TRUE(first.result.ok) << first.result.error;
     const fs::path again = tempDir() / "interior-skybox-again.glb";
     GenerateOptions options;

@@ -1,6 +1,6 @@
 // The generated scenes: deterministic bytes, the documented counts and bounds (scenes/README.md),
 // valid geometry, and the situations each scene is there to reproduce.
-#include "gltf_inspect.h"
+#include "generated_scenes.h"
 #include "scenes/generators/scene_generators.h"
 
 #include <gtest/gtest.h>
@@ -25,22 +25,6 @@ using scenegen::GenerateResult;
 using scenegen::generateScene;
 
 constexpr double kPi = std::numbers::pi;
-
-fs::path tempDir() {
-    // One folder per process: CTest runs these tests in parallel processes (-j), and other
-    // builds may run them at the same time, so a shared folder would race on the same files.
-    const fs::path dir = fs::path(::testing::TempDir()) / ("shadowlab_scenegen_tests_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    // Removed when the test process ends.
-    static const struct Cleanup {
-        fs::path path;
-        ~Cleanup() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    } cleanup{dir};
-    return dir;
-}
 
 // Each default scene (seed 1, scale 1) is generated and read back once for the whole suite.
 struct Generated {
@@ -70,10 +54,10 @@ struct Documented {
 const std::vector<Documented>& documented() {
     static const std::vector<Documented> d = {
         // name, nodes, mesh instances, triangles drawn, meshes, materials, cameras, lights, bounds
-        {"forest", 10008, 10001, 2037960, 7, 9, 5, 1, {-256.23, -14.14, -256.68}, {256.03, 24.88, 256.58}},
+        {"forest", 10072, 10064, 2037960, 70, 9, 5, 1, {-256.23, -14.14, -256.68}, {256.03, 24.88, 256.58}},
         {"cubes", 3005, 3001, 68768, 4, 4, 2, 1, {-120.0, -8.23, -120.0}, {120.0, 10.49, 120.0}},
         {"chessboard", 39, 34, 18014, 14, 6, 3, 1, {-20.0, 0.0, -20.0}, {20.0, 2.3, 20.0}},
-        {"street", 571, 564, 13868, 13, 14, 3, 1, {-120.0, 0.0, -1060.0}, {120.0, 79.35, 1060.0}},
+        {"street", 586, 576, 13980, 25, 14, 3, 1, {-120.0, 0.0, -1060.0}, {120.0, 79.35, 1060.0}},
         {"plane-box", 4, 2, 14, 2, 2, 1, 1, {-10.0, 0.0, -10.0}, {10.0, 2.0, 10.0}},
         {"interior", 12, 7, 546, 4, 5, 3, 1, {-3.0, 0.0, -2.5}, {3.0, 2.7, 2.5}},
     };
@@ -343,6 +327,17 @@ std::optional<double> groundHeight(const tinygltf::Model& m, int mesh, const glm
     return std::nullopt;
 }
 
+// Height of the forest's tiled terrain (the mesh nodes under "Terrain") below (x, z).
+std::optional<double> terrainHeight(const Inspected& f, double x, double z) {
+    for (const InspectedNode* tile : f.childrenOf("Terrain")) {
+        const tinygltf::Primitive& p = f.model.meshes[std::size_t(tile->mesh)].primitives[0];
+        const tinygltf::Accessor& a = f.model.accessors[std::size_t(p.attributes.at("POSITION"))];
+        if (x < a.minValues[0] || x > a.maxValues[0] || z < a.minValues[2] || z > a.maxValues[2]) continue;
+        if (auto h = groundHeight(f.model, tile->mesh, tile->world, x, z)) return h;
+    }
+    return std::nullopt;
+}
+
 glm::dvec3 lightDirection(const Inspected& f, const std::string& node) {
     const InspectedNode* n = f.node(node);
     return n ? n->forward() : glm::dvec3(0.0);
@@ -369,13 +364,21 @@ TEST(ForestScene, TenThousandTreesOfSeveralVariantsStandOnTheTerrain) {
         EXPECT_EQ(f.model.meshes[std::size_t(mesh)].primitives.size(), 2u) << name << ": trunk and crown";
         EXPECT_GT(uses[mesh], 500u) << name;
     }
-    const InspectedNode* terrain = f.node("Terrain");
-    ASSERT_NE(terrain, nullptr);
-    EXPECT_EQ(meshTriangles(f.model, terrain->mesh), 2u * 256u * 256u);
+    // The terrain: 8 x 8 tiles of 32 x 32 cells, each its own mesh, 2 * 256 * 256 triangles in all.
+    const auto tiles = f.childrenOf("Terrain");
+    ASSERT_EQ(tiles.size(), 64u);
+    std::size_t terrainTriangles = 0;
+    std::set<int> tileMeshes;
+    for (const InspectedNode* tile : tiles) {
+        terrainTriangles += meshTriangles(f.model, tile->mesh);
+        tileMeshes.insert(tile->mesh);
+    }
+    EXPECT_EQ(terrainTriangles, 2u * 256u * 256u);
+    EXPECT_EQ(tileMeshes.size(), tiles.size());
     // Every 97th tree: its foot is 0.1 m below the terrain surface right under it (uniform scale).
     for (std::size_t i = 0; i < trees.size(); i += 97) {
         const glm::dvec3 foot = trees[i]->position();
-        const auto ground = groundHeight(f.model, terrain->mesh, terrain->world, foot.x, foot.z);
+        const auto ground = terrainHeight(f, foot.x, foot.z);
         ASSERT_TRUE(ground.has_value()) << trees[i]->name << " is not above the terrain";
         EXPECT_NEAR(foot.y, *ground - 0.1, 2e-3) << trees[i]->name;
         const glm::dvec3 up = glm::normalize(glm::dvec3(trees[i]->world * glm::dvec4(0, 1, 0, 0)));
@@ -406,10 +409,9 @@ TEST(ForestScene, SunAndThePaperCameraPresets) {
         EXPECT_DOUBLE_EQ(c.perspective.znear, 0.1);  // thesis ch. 10
         EXPECT_DOUBLE_EQ(c.perspective.zfar, 70.0);
     }
-    const InspectedNode* terrain = f.node("Terrain");
     auto eyeHeight = [&](const InspectedNode* cam) {
         const glm::dvec3 e = cam->position();
-        return e.y - groundHeight(f.model, terrain->mesh, terrain->world, e.x, e.z).value_or(1e9);
+        return e.y - terrainHeight(f, e.x, e.z).value_or(1e9);
     };
     const InspectedNode* side = f.node("Camera_AlongGround_SunSide");
     const InspectedNode* behind = f.node("Camera_AlongGround_SunBehind");
