@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace shadowlab::app {
@@ -22,7 +23,7 @@ std::vector<RayReceiver> receiversOf(const MeasureFrame& frame) {
 
 // Ray-cast truth per pixel (0 where no receiver).
 std::vector<std::uint8_t> truthPerPixel(const MeasureFrame& frame, const RayScene& rays, const ShadowLight& light) {
-    const std::vector<std::uint8_t> lit = rays.visibleFromLight(receiversOf(frame), light);
+    const std::vector<std::uint8_t> lit = rays.visibleFromLight(receiversOf(frame), light, frame.casters);
     std::vector<std::uint8_t> perPixel(frame.pixelCount(), 0);
     std::size_t k = 0;
     for (std::size_t i = 0; i < frame.pixelCount(); ++i)
@@ -164,6 +165,32 @@ std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& 
         result.push_back(fig);
     }
     return result;
+}
+
+std::string edgeText(const std::optional<double>& eEdge, int width) {
+    char text[64];
+    if (eEdge) {
+        std::snprintf(text, sizeof text, "%*.3f", width, *eEdge);
+        return text;
+    }
+    // "—" is 3 bytes and one column: pad by columns.
+    return std::string(std::size_t(std::max(0, width - 1)), ' ') + "\u2014";
+}
+
+std::string truthVerdict(const GroundTruthFigures& t) {
+    if (t.receivers == 0 || t.eTotal < kVerdictShare) return {};
+    char text[320];
+    if (t.falseLight >= t.falseShadow)
+        std::snprintf(text, sizeof text,
+                      "%.0f%% false light: something does not cast in the map that blocks light in the truth "
+                      "(faces culled by casters.singleSided / doubleSided, an excluded mesh, or a leak at contacts)",
+                      100.0 * t.falseLight);
+    else
+        std::snprintf(text, sizeof text,
+                      "%.0f%% false shadow: the map shadows what the truth lights (acne: raise the depth offset; or a "
+                      "caster the truth ignores)",
+                      100.0 * t.falseShadow);
+    return text;
 }
 
 RgbaImage mismatchImage(const std::vector<PixelVerdict>& verdicts, int width, int height) {

@@ -16,7 +16,7 @@ namespace shadowlab::app {
 
 struct GroundTruthFigures {
     double eTotal = 0.0, falseShadow = 0.0, falseLight = 0.0;  // shares of the receivers
-    double eEdge = 0.0;
+    std::optional<double> eEdge;  // none: too few truth-boundary pixels (kMinEdgePixels)
     std::size_t receivers = 0, truthBoundary = 0;
     double traceSeconds = 0.0;  // rays only; the BVH build is RayScene::buildSeconds
 };
@@ -73,6 +73,14 @@ struct TemporalFigures {
 };
 std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& scene, const Settings& settings,
                                                int width, int height, const RayScene& rays);
+
+// E_edge for a table: "%.3f" right-aligned in `width`, or "—" (too few edge pixels to measure).
+std::string edgeText(const std::optional<double>& eEdge, int width);
+
+// The truth's verdict in words where the mismatch share is large (above kVerdictShare): which way
+// the map is wrong and what usually causes it; empty where the map mostly agrees.
+constexpr double kVerdictShare = 0.05;
+std::string truthVerdict(const GroundTruthFigures& truth);
 
 // A colour per verdict, top row first: agreeing light grey (lit) or dark grey (shadow), false
 // shadow red, false light blue, not a receiver near-black.

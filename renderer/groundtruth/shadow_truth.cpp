@@ -2,7 +2,7 @@
 
 namespace shadowlab {
 
-ShadowComparison compareWithTruth(const ShadowStateFrame& f) {
+ShadowComparison compareWithTruth(const ShadowStateFrame& f, std::size_t minEdgePixels) {
     ShadowComparison c;
     const std::size_t n = f.width > 0 && f.height > 0 ? std::size_t(f.width) * std::size_t(f.height) : 0;
     if (n == 0 || f.receiver.size() != n || f.shadowTerm.size() != n || f.truthLit.size() != n) return c;
@@ -31,7 +31,7 @@ ShadowComparison compareWithTruth(const ShadowStateFrame& f) {
     c.eTotal = mismatches / double(c.receivers);
     c.falseShadowShare = double(c.falseShadow) / double(c.receivers);
     c.falseLightShare = double(c.falseLight) / double(c.receivers);
-    c.eEdge = c.truthBoundary > 0 ? mismatches / double(c.truthBoundary) : 0.0;
+    if (c.truthBoundary > 0 && c.truthBoundary >= minEdgePixels) c.eEdge = mismatches / double(c.truthBoundary);
     return c;
 }
 
