@@ -1,4 +1,4 @@
-// shadowlab generate NAME --out FILE.glb [--seed S] [--scale X]: writes one of the generated
+// shadowlab generate NAME --out FILE.glb [--seed S] [--scale X] [--skybox]: writes one of the generated
 // test worlds (scenes/README.md) as binary glTF. Deterministic: same seed and scale, same bytes.
 #include "commands.h"
 #include "scenes/generators/scene_generators.h"
@@ -20,12 +20,14 @@ struct GenerateCommandOptions {
     std::string out;
     std::uint64_t seed = 1;
     double scale = 1.0;
+    bool skyBox = false;
 };
 
 void runGenerate(const GenerateCommandOptions& options) {
     scenegen::GenerateOptions generateOptions;
     generateOptions.seed = options.seed;
     generateOptions.scale = options.scale;
+    generateOptions.skyBox = options.skyBox;
     const auto start = std::chrono::steady_clock::now();
     const scenegen::GenerateResult result = scenegen::generateScene(options.name, generateOptions, options.out);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -34,13 +36,13 @@ void runGenerate(const GenerateCommandOptions& options) {
         throw CLI::RuntimeError(1);
     }
     const scenegen::SceneStats& s = result.stats;
-    std::printf("wrote %s (%s, seed %llu, scale %g): %zu nodes, %zu mesh instances, %zu triangles drawn, "
+    std::printf("wrote %s (%s%s, seed %llu, scale %g): %zu nodes, %zu mesh instances, %zu triangles drawn, "
                 "%zu meshes, %zu materials, %zu cameras, %zu lights\n"
                 "bounds (%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f), %.1f MB, %.2f s\n",
-                options.out.c_str(), options.name.c_str(), static_cast<unsigned long long>(options.seed), options.scale,
-                s.nodes, s.meshInstances, s.triangles, s.meshes, s.materials, s.cameras, s.lights, s.boundsMin.x,
-                s.boundsMin.y, s.boundsMin.z, s.boundsMax.x, s.boundsMax.y, s.boundsMax.z, double(s.fileBytes) / 1e6,
-                seconds);
+                options.out.c_str(), options.name.c_str(), options.skyBox ? " in a sky box" : "",
+                static_cast<unsigned long long>(options.seed), options.scale, s.nodes, s.meshInstances, s.triangles,
+                s.meshes, s.materials, s.cameras, s.lights, s.boundsMin.x, s.boundsMin.y, s.boundsMin.z, s.boundsMax.x,
+                s.boundsMax.y, s.boundsMax.z, double(s.fileBytes) / 1e6, seconds);
 }
 
 }  // namespace
@@ -57,8 +59,11 @@ void addGenerateCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--scale", options->scale,
                     "amount of content: object count and area at constant density (0.01 .. 16; "
-                    "plane-box and chessboard only 1)")
+                    "plane-box, chessboard and interior only 1)")
         ->capture_default_str();
+    cmd->add_flag("--skybox", options->skyBox,
+                  "wrap the scene in a closed, textured, single-sided sky box facing inwards (node SkyBox) that "
+                  "encloses everything drawn, the cameras and the positioned lights");
     std::string scenes = "Scenes (scenes/README.md):\n";
     for (const scenegen::GeneratorInfo& g : scenegen::generators()) scenes += "  " + g.name + ": " + g.summary + "\n";
     cmd->footer(scenes);

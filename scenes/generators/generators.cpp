@@ -74,6 +74,11 @@ const std::vector<Entry>& registry() {
          buildStreet},
         {{"plane-box", "minimal sanity scene: a 20 m ground plane and one 2 m box, used by the renderer tests", false},
          buildPlaneBox},
+        {{"interior",
+          "a closed room of single-sided walls facing inwards, sun through a window with a venetian blind, table "
+          "and chairs",
+          false},
+         buildInterior},
     };
     return entries;
 }
@@ -132,8 +137,9 @@ GenerateResult generateScene(const std::string& name, const GenerateOptions& opt
     }
     try {
         GltfBuilder builder("shadowlab scenegen: " + name + " seed " + std::to_string(options.seed) + " scale " +
-                            formatScale(options.scale));
+                            formatScale(options.scale) + (options.skyBox ? " sky box" : ""));
         entry->build(builder, options);
+        if (options.skyBox) addSkyBox(builder);
         result.ok = builder.write(out, result.stats, result.error);
     } catch (const std::exception& e) {  // allocation failure on huge scales, filesystem errors
         result.ok = false;

@@ -16,6 +16,13 @@ void buildCubes(GltfBuilder& builder, const GenerateOptions& options);
 void buildChessboard(GltfBuilder& builder, const GenerateOptions& options);
 void buildStreet(GltfBuilder& builder, const GenerateOptions& options);
 void buildPlaneBox(GltfBuilder& builder, const GenerateOptions& options);
+void buildInterior(GltfBuilder& builder, const GenerateOptions& options);
+
+// Wraps everything built so far (drawn geometry, cameras, positioned lights) in a textured
+// single-sided cube whose faces look inwards: node and mesh "SkyBox".
+void addSkyBox(GltfBuilder& builder);
+// An 8-bit RGB PNG of width x height pixels (rgb: rows top to bottom), uncompressed deflate.
+std::vector<std::uint8_t> encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb);
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 

@@ -14,7 +14,30 @@ void MeshData::append(const MeshData& other, glm::vec3 offset) {
     const auto base = std::uint32_t(positions.size());
     for (const glm::vec3& p : other.positions) positions.push_back(p + offset);
     normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+    texcoords.insert(texcoords.end(), other.texcoords.begin(), other.texcoords.end());
     for (std::uint32_t i : other.indices) indices.push_back(base + i);
+}
+
+void MeshData::append(const MeshData& other, const glm::quat& rotation, glm::vec3 offset) {
+    const auto base = std::uint32_t(positions.size());
+    for (const glm::vec3& p : other.positions) positions.push_back(rotation * p + offset);
+    for (const glm::vec3& n : other.normals) normals.push_back(glm::normalize(rotation * n));
+    texcoords.insert(texcoords.end(), other.texcoords.begin(), other.texcoords.end());
+    for (std::uint32_t i : other.indices) indices.push_back(base + i);
+}
+
+void MeshData::addQuad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 normal) {
+    const glm::vec3 n = glm::normalize(normal);
+    const auto base = std::uint32_t(positions.size());
+    for (const glm::vec3& p : {a, b, c, d}) {
+        positions.push_back(p);
+        normals.push_back(n);
+    }
+    // Counter-clockwise seen from the side `normal` points to (glTF front face, spec 3.7.2.1).
+    if (glm::dot(glm::cross(b - a, c - a), n) >= 0.0f)
+        indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    else
+        indices.insert(indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
 }
 
 MeshData box(glm::vec3 lo, glm::vec3 hi) {
@@ -33,6 +56,12 @@ MeshData box(glm::vec3 lo, glm::vec3 hi) {
         for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
     }
     return m;
+}
+
+MeshData insideOut(MeshData mesh) {
+    for (glm::vec3& n : mesh.normals) n = -n;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+    return mesh;
 }
 
 // Around +Y, angle measured so that increasing angle goes from +X towards -Z: with that

@@ -2,6 +2,7 @@
 // Triangle-list geometry for the generators: positions, normals and indices in object space,
 // counter-clockwise seen from outside (the glTF front face), normals pointing outwards.
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -12,15 +13,24 @@ namespace shadowlab::scenegen {
 struct MeshData {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> texcoords;  // empty, or one per position (written as TEXCOORD_0)
     std::vector<std::uint32_t> indices;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     // Appends `other` moved by `offset` (no rotation, so normals stay as they are).
     void append(const MeshData& other, glm::vec3 offset = glm::vec3(0.0f));
+    // Appends `other` rotated by `rotation`, then moved by `offset`.
+    void append(const MeshData& other, const glm::quat& rotation, glm::vec3 offset);
+    // A planar convex quad a-b-c-d (in order around it) whose front face looks along `normal`: the
+    // winding is chosen from the corners, so callers say which way the face looks, not the order.
+    void addQuad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 normal);
 };
 
 // Axis-aligned box [lo, hi], flat normals: 24 vertices, 12 triangles.
 MeshData box(glm::vec3 lo, glm::vec3 hi);
+
+// The same surface seen from the other side: normals negated, every triangle wound the other way.
+MeshData insideOut(MeshData mesh);
 
 // Open cylinder side around +Y from y0 to y1 (no caps), smooth normals: 2 * segments triangles.
 MeshData cylinderSide(float radius, float y0, float y1, int segments);

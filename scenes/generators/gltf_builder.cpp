@@ -63,6 +63,41 @@ int GltfBuilder::addMaterial(const std::string& name, glm::vec4 baseColor, float
     return int(model_.materials.size()) - 1;
 }
 
+int GltfBuilder::addPngTexture(const std::string& name, const std::vector<std::uint8_t>& png) {
+    std::vector<unsigned char>& buffer = model_.buffers[0].data;
+    while (buffer.size() % 4 != 0) buffer.push_back(0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = buffer.size();
+    view.byteLength = png.size();
+    buffer.insert(buffer.end(), png.begin(), png.end());
+    model_.bufferViews.push_back(view);
+
+    tinygltf::Image image;
+    image.name = name;
+    image.mimeType = "image/png";
+    image.bufferView = int(model_.bufferViews.size()) - 1;
+    model_.images.push_back(image);
+
+    tinygltf::Sampler sampler;
+    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+    sampler.wrapS = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+    sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+    model_.samplers.push_back(sampler);
+
+    tinygltf::Texture texture;
+    texture.name = name;
+    texture.source = int(model_.images.size()) - 1;
+    texture.sampler = int(model_.samplers.size()) - 1;
+    model_.textures.push_back(texture);
+    return int(model_.textures.size()) - 1;
+}
+
+void GltfBuilder::setBaseColorTexture(int material, int texture) {
+    model_.materials[std::size_t(material)].pbrMetallicRoughness.baseColorTexture.index = texture;
+}
+
 int GltfBuilder::addAccessor(const void* data, std::size_t bytes, int componentType, int type, std::size_t count,
                              int target) {
     std::vector<unsigned char>& buffer = model_.buffers[0].data;
@@ -111,6 +146,10 @@ int GltfBuilder::addMesh(const std::string& name, const std::vector<Part>& parts
         primitive.attributes["NORMAL"] =
             addAccessor(d.normals.data(), d.normals.size() * sizeof(glm::vec3), TINYGLTF_COMPONENT_TYPE_FLOAT,
                         TINYGLTF_TYPE_VEC3, d.normals.size(), TINYGLTF_TARGET_ARRAY_BUFFER);
+        if (!d.texcoords.empty())
+            primitive.attributes["TEXCOORD_0"] =
+                addAccessor(d.texcoords.data(), d.texcoords.size() * sizeof(glm::vec2), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                            TINYGLTF_TYPE_VEC2, d.texcoords.size(), TINYGLTF_TARGET_ARRAY_BUFFER);
         if (d.positions.size() <= 65535) {
             std::vector<std::uint16_t> shortIndices(d.indices.begin(), d.indices.end());
             primitive.indices = addAccessor(shortIndices.data(), shortIndices.size() * 2,
@@ -206,16 +245,7 @@ int GltfBuilder::addLightNode(const std::string& name, int light, glm::dvec3 pos
     return node;
 }
 
-bool GltfBuilder::write(const std::filesystem::path& out, SceneStats& stats, std::string& error) {
-    stats = SceneStats{};
-    stats.nodes = model_.nodes.size();
-    stats.meshes = model_.meshes.size();
-    stats.materials = model_.materials.size();
-    stats.cameras = model_.cameras.size();
-    stats.lights = model_.lights.size();
-    for (const MeshData& m : meshGeometry_) stats.vertices += m.positions.size();
-
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+void GltfBuilder::forEachNode(const std::function<void(const tinygltf::Node&, const glm::dmat4&)>& visit) const {
     // Depth-first from the roots with an explicit stack (the hierarchy is shallow, but a stack
     // costs nothing and never overflows).
     std::vector<std::pair<int, glm::dmat4>> stack;
@@ -225,21 +255,42 @@ bool GltfBuilder::write(const std::filesystem::path& out, SceneStats& stats, std
         stack.pop_back();
         const tinygltf::Node& node = model_.nodes[std::size_t(index)];
         const glm::dmat4 world = parentWorld * localMatrix(node);
-        if (node.mesh >= 0) {
-            ++stats.meshInstances;
-            stats.triangles += meshTriangles_[std::size_t(node.mesh)];
-            for (const glm::vec3& p : meshGeometry_[std::size_t(node.mesh)].positions) {
-                const glm::dvec3 w = glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0));
-                lo = glm::min(lo, w);
-                hi = glm::max(hi, w);
-            }
-        }
+        visit(node, world);
         for (int child : node.children) stack.emplace_back(child, world);
     }
-    if (stats.meshInstances > 0) {
-        stats.boundsMin = lo;
-        stats.boundsMax = hi;
-    }
+}
+
+bool GltfBuilder::drawnBounds(glm::dvec3& lo, glm::dvec3& hi) const {
+    lo = glm::dvec3(std::numeric_limits<double>::max());
+    hi = glm::dvec3(std::numeric_limits<double>::lowest());
+    bool any = false;
+    forEachNode([&](const tinygltf::Node& node, const glm::dmat4& world) {
+        if (node.mesh < 0) return;
+        any = true;
+        for (const glm::vec3& p : meshGeometry_[std::size_t(node.mesh)].positions) {
+            const glm::dvec3 w = glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+    });
+    return any;
+}
+
+bool GltfBuilder::write(const std::filesystem::path& out, SceneStats& stats, std::string& error) {
+    stats = SceneStats{};
+    stats.nodes = model_.nodes.size();
+    stats.meshes = model_.meshes.size();
+    stats.materials = model_.materials.size();
+    stats.cameras = model_.cameras.size();
+    stats.lights = model_.lights.size();
+    for (const MeshData& m : meshGeometry_) stats.vertices += m.positions.size();
+    forEachNode([&](const tinygltf::Node& node, const glm::dmat4&) {
+        if (node.mesh < 0) return;
+        ++stats.meshInstances;
+        stats.triangles += meshTriangles_[std::size_t(node.mesh)];
+    });
+    drawnBounds(stats.boundsMin, stats.boundsMax);
+    if (stats.meshInstances == 0) stats.boundsMin = stats.boundsMax = glm::dvec3(0.0);
 
     std::error_code ec;
     if (std::filesystem::is_directory(out, ec)) {

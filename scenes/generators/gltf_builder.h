@@ -8,6 +8,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,8 +29,12 @@ class GltfBuilder {
 public:
     explicit GltfBuilder(const std::string& generatorDescription);
 
-    // baseColor is linear RGBA; metallic 0, roughness as given.
+    // baseColor is linear RGBA; metallic 0, roughness as given; single-sided (the glTF default).
     int addMaterial(const std::string& name, glm::vec4 baseColor, float roughness = 0.9f);
+    // A PNG stored in the binary buffer (image/png bufferView), sampled linearly, clamped at the edges.
+    int addPngTexture(const std::string& name, const std::vector<std::uint8_t>& png);
+    // Uses `texture` as the base colour texture of `material` (TEXCOORD_0).
+    void setBaseColorTexture(int material, int texture);
     struct Part {
         const MeshData* data;
         int material;
@@ -48,6 +54,11 @@ public:
     // A camera/light node at `position` looking along `direction`.
     int addCameraNode(const std::string& name, int camera, glm::dvec3 position, glm::dvec3 direction, int parent = -1);
     int addLightNode(const std::string& name, int light, glm::dvec3 position, glm::dvec3 direction, int parent = -1);
+
+    // Calls `visit` for every node reachable from the scene with its world matrix (parents first).
+    void forEachNode(const std::function<void(const tinygltf::Node&, const glm::dmat4& world)>& visit) const;
+    // World-space bounds of the vertices drawn so far; false when nothing is drawn yet.
+    bool drawnBounds(glm::dvec3& lo, glm::dvec3& hi) const;
 
     // Counts the model (world transforms, drawn triangles, bounds) and writes it as .glb.
     bool write(const std::filesystem::path& out, SceneStats& stats, std::string& error);

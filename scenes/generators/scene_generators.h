@@ -15,6 +15,9 @@ struct GenerateOptions {
     // Amount of content: object count and ground area grow with it at constant density
     // (forest, cubes, street). Scenes with a fixed layout (plane-box, chessboard) accept only 1.
     double scale = 1.0;
+    // Wrap the scene in a closed, textured, single-sided sky box facing inwards (node "SkyBox"),
+    // large enough to enclose everything drawn, every camera and every positioned light.
+    bool skyBox = false;
 };
 
 // What the written file contains, counted by the generator while building it.
@@ -44,10 +47,10 @@ struct GeneratorInfo {
     bool scalable = true;
 };
 
-// The generators, in a fixed order: forest, cubes, chessboard, street, plane-box.
+// The generators, in a fixed order: forest, cubes, chessboard, street, plane-box, interior.
 const std::vector<GeneratorInfo>& generators();
 std::vector<std::string> generatorNames();
-// "forest, cubes, chessboard, street, plane-box" for messages.
+// "forest, cubes, chessboard, street, plane-box, interior" for messages.
 std::string generatorNameList();
 
 // Builds scene `name` and writes it as binary glTF (.glb, one embedded buffer) to `out`

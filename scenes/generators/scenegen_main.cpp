@@ -1,4 +1,4 @@
-// shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X]: writes one generated scene. Used by the
+// shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X] [--skybox]: writes one generated scene. Used by the
 // build (default_scenes) and links only the generator library, never the GL renderer.
 #include "scene_generators.h"
 
@@ -13,7 +13,7 @@ namespace {
 
 int usage(const char* message) {
     if (message) std::cerr << "shadowlab-scenegen: " << message << "\n";
-    std::cerr << "usage: shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X]\n"
+    std::cerr << "usage: shadowlab-scenegen NAME OUT.glb [--seed S] [--scale X] [--skybox]\n"
               << "scenes: " << shadowlab::scenegen::generatorNameList() << "\n";
     return 2;
 }
@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
                 return usage("--seed needs a non-negative integer");
         } else if (arg == "--scale") {
             if (!parseDouble(i + 1 < argc ? argv[++i] : nullptr, options.scale)) return usage("--scale needs a number");
+        } else if (arg == "--skybox") {
+            options.skyBox = true;
         } else if (!arg.empty() && arg[0] == '-') {
             return usage(("unknown option " + arg).c_str());
         } else if (name.empty()) {

@@ -49,13 +49,26 @@ TEST(GenerateCommand, WritesTheNamedSceneWithSeedAndScale) {
     EXPECT_TRUE(readBytes(out) == readBytes(direct));
 }
 
+TEST(GenerateCommand, SkyBoxFlagWrapsTheSceneAndSaysSo) {
+    const fs::path plain = outDir() / "interior.glb", boxed = outDir() / "interior-skybox.glb";
+    testing::internal::CaptureStdout();
+    EXPECT_EQ(runShadowlab({"generate", "interior", "--out", plain.string()}), 0);
+    EXPECT_EQ(runShadowlab({"generate", "interior", "--out", boxed.string(), "--skybox"}), 0);
+    const std::string printed = testing::internal::GetCapturedStdout();
+    EXPECT_NE(printed.find("interior in a sky box"), std::string::npos) << printed;
+    const Inspected a = inspect(plain, false), b = inspect(boxed, false);
+    EXPECT_EQ(a.node("SkyBox"), nullptr);
+    ASSERT_NE(b.node("SkyBox"), nullptr);
+    EXPECT_EQ(b.meshInstances, a.meshInstances + 1);
+}
+
 TEST(GenerateCommand, UnknownNameListsTheValidNamesAndFails) {
     testing::internal::CaptureStderr();
     const int code = runShadowlab({"generate", "jungle", "--out", (outDir() / "jungle.glb").string()});
     const std::string err = testing::internal::GetCapturedStderr();
     EXPECT_NE(code, 0);
     EXPECT_NE(err.find("jungle"), std::string::npos) << err;
-    EXPECT_NE(err.find("forest, cubes, chessboard, street, plane-box"), std::string::npos) << err;
+    EXPECT_NE(err.find("forest, cubes, chessboard, street, plane-box, interior"), std::string::npos) << err;
     EXPECT_FALSE(fs::exists(outDir() / "jungle.glb"));
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -46,7 +47,8 @@ TEST_P(LoaderRoundTrip, LoadsWithTheGeneratorsCountsAndWithoutDefaults) {
     for (const Node& n : scene.nodes) EXPECT_FALSE(n.name.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, LoaderRoundTrip, ::testing::Values("forest", "cubes", "chessboard", "street", "plane-box"),
+INSTANTIATE_TEST_SUITE_P(Scenes, LoaderRoundTrip,
+                         ::testing::Values("forest", "cubes", "chessboard", "street", "plane-box", "interior"),
                          [](const auto& info) {
                              std::string n = info.param;
                              std::replace(n.begin(), n.end(), '-', '_');
@@ -69,6 +71,28 @@ TEST(LoaderRoundTrip, ForestCamerasAndSunAsTheThesisSetsThem) {
     const glm::dvec3 view = -glm::dvec3(scene.cameras.front().cameraToWorld[2]);
     const glm::dvec3 sun = scene.lights[0].direction;
     EXPECT_NEAR(glm::dot(glm::normalize(glm::dvec3(view.x, 0, view.z)), glm::normalize(glm::dvec3(sun.x, 0, sun.z))), 0.0, 1e-5);
+}
+
+TEST(LoaderRoundTrip, SkyBoxLoadsSingleSidedWithItsTexture) {
+    const fs::path file = fs::path(::testing::TempDir()) / "roundtrip-interior-skybox.glb";
+    scenegen::GenerateOptions options;
+    options.skyBox = true;
+    const scenegen::GenerateResult generated = scenegen::generateScene("interior", options, file);
+    ASSERT_TRUE(generated.ok) << generated.error;
+    const LoadResult loaded = loadScene(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error;
+    EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
+    const Scene& scene = *loaded.scene;
+    EXPECT_EQ(scene.triangleCount(), generated.stats.triangles);
+    const auto sky = std::find_if(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.name == "SkyBox_Sky"; });
+    ASSERT_NE(sky, scene.materials.end());
+    EXPECT_FALSE(sky->doubleSided);
+    ASSERT_GE(sky->baseColorTexture, 0);
+    ASSERT_LT(std::size_t(sky->baseColorTexture), scene.textures.size());
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(scene.bounds.min[i], generated.stats.boundsMin[i], 1e-3);
+        EXPECT_NEAR(scene.bounds.max[i], generated.stats.boundsMax[i], 1e-3);
+    }
 }
 
 TEST(LoaderRoundTrip, ChessboardSpotLightIsASpot) {

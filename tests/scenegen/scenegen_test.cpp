@@ -75,15 +75,17 @@ const std::vector<Documented>& documented() {
         {"chessboard", 39, 34, 18014, 14, 6, 3, 1, {-20.0, 0.0, -20.0}, {20.0, 2.3, 20.0}},
         {"street", 571, 564, 13868, 13, 14, 3, 1, {-120.0, 0.0, -1060.0}, {120.0, 79.35, 1060.0}},
         {"plane-box", 4, 2, 14, 2, 2, 1, 1, {-10.0, 0.0, -10.0}, {10.0, 2.0, 10.0}},
+        {"interior", 12, 7, 546, 4, 5, 3, 1, {-3.0, 0.0, -2.5}, {3.0, 2.7, 2.5}},
     };
     return d;
 }
 
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
-TEST(SceneGenerators, NamesAreTheFiveDocumentedScenesInOrder) {
-    EXPECT_EQ(scenegen::generatorNames(), (std::vector<std::string>{"forest", "cubes", "chessboard", "street", "plane-box"}));
-    EXPECT_EQ(scenegen::generatorNameList(), "forest, cubes, chessboard, street, plane-box");
+TEST(SceneGenerators, NamesAreTheSixDocumentedScenesInOrder) {
+    EXPECT_EQ(scenegen::generatorNames(),
+              (std::vector<std::string>{"forest", "cubes", "chessboard", "street", "plane-box", "interior"}));
+    EXPECT_EQ(scenegen::generatorNameList(), "forest, cubes, chessboard, street, plane-box, interior");
 }
 
 TEST_P(EveryScene, SameSeedGivesByteIdenticalFiles) {
@@ -218,7 +220,8 @@ TEST_P(EveryScene, GeometryIsValidGltfWithOutwardNormals) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::Values("forest", "cubes", "chessboard", "street", "plane-box"),
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
+                         ::testing::Values("forest", "cubes", "chessboard", "street", "plane-box", "interior"),
                          [](const auto& info) {
                              std::string n = info.param;
                              std::replace(n.begin(), n.end(), '-', '_');
@@ -231,7 +234,7 @@ TEST(SceneGenerators, UnknownNameIsAnErrorListingTheValidNames) {
     const GenerateResult r = generateScene("forrest", {}, tempDir() / "nope.glb");
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("forrest"), std::string::npos);
-    EXPECT_NE(r.error.find("forest, cubes, chessboard, street, plane-box"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("forest, cubes, chessboard, street, plane-box, interior"), std::string::npos) << r.error;
     EXPECT_FALSE(fs::exists(tempDir() / "nope.glb"));
 }
 
@@ -241,7 +244,7 @@ TEST(SceneGenerators, BadScalesAreErrorsNotCrashes) {
         EXPECT_FALSE(r.ok) << scale;
         EXPECT_NE(r.error.find("--scale"), std::string::npos) << r.error;
     }
-    for (const char* fixed : {"plane-box", "chessboard"}) {
+    for (const char* fixed : {"plane-box", "chessboard", "interior"}) {
         const GenerateResult r = generateScene(fixed, {1, 2.0}, tempDir() / "fixed.glb");
         EXPECT_FALSE(r.ok) << fixed;
         EXPECT_NE(r.error.find("fixed layout"), std::string::npos) << r.error;
@@ -288,7 +291,7 @@ TEST(SceneGenerators, SeedChangesTheRandomScenes) {
         }
     }
     // The fixed layouts do not depend on the seed: only the provenance string in the asset differs.
-    for (const char* name : {"plane-box", "chessboard"}) {
+    for (const char* name : {"plane-box", "chessboard", "interior"}) {
         const fs::path a = tempDir() / (std::string(name) + "-seed7.glb"), b = tempDir() / (std::string(name) + "-seed8.glb");
         ASSERT_TRUE(generateScene(name, {7, 1.0}, a).ok && generateScene(name, {8, 1.0}, b).ok);
         tinygltf::Model ma = inspect(a, false).model, mb = inspect(b, false).model;
