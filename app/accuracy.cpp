@@ -167,32 +167,6 @@ std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& 
     return result;
 }
 
-std::string edgeText(const std::optional<double>& eEdge, int width) {
-    char text[64];
-    if (eEdge) {
-        std::snprintf(text, sizeof text, "%*.3f", width, *eEdge);
-        return text;
-    }
-    // "—" is 3 bytes and one column: pad by columns.
-    return std::string(std::size_t(std::max(0, width - 1)), ' ') + "\u2014";
-}
-
-std::string truthVerdict(const GroundTruthFigures& t) {
-    if (t.receivers == 0 || t.eTotal < kVerdictShare) return {};
-    char text[320];
-    if (t.falseLight >= t.falseShadow)
-        std::snprintf(text, sizeof text,
-                      "%.0f%% false light: something does not cast in the map that blocks light in the truth "
-                      "(faces culled by casters.singleSided / doubleSided, an excluded mesh, or a leak at contacts)",
-                      100.0 * t.falseLight);
-    else
-        std::snprintf(text, sizeof text,
-                      "%.0f%% false shadow: the map shadows what the truth lights (acne: raise the depth offset; or a "
-                      "caster the truth ignores)",
-                      100.0 * t.falseShadow);
-    return text;
-}
-
 RgbaImage mismatchImage(const std::vector<PixelVerdict>& verdicts, int width, int height) {
     RgbaImage image;
     image.width = width;

@@ -74,14 +74,6 @@ struct TemporalFigures {
 std::vector<TemporalFigures> temporalStability(Renderer& renderer, const Scene& scene, const Settings& settings,
                                                int width, int height, const RayScene& rays);
 
-// E_edge for a table: "%.3f" right-aligned in `width`, or "—" (too few edge pixels to measure).
-std::string edgeText(const std::optional<double>& eEdge, int width);
-
-// The truth's verdict in words where the mismatch share is large (above kVerdictShare): which way
-// the map is wrong and what usually causes it; empty where the map mostly agrees.
-constexpr double kVerdictShare = 0.05;
-std::string truthVerdict(const GroundTruthFigures& truth);
-
 // A colour per verdict, top row first: agreeing light grey (lit) or dark grey (shadow), false
 // shadow red, false light blue, not a receiver near-black.
 RgbaImage mismatchImage(const std::vector<PixelVerdict>& verdicts, int width, int height);

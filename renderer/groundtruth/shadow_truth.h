@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace shadowlab {
@@ -42,5 +43,13 @@ constexpr std::size_t kMinEdgePixels = 100;
 
 // Sizes that do not match width * height give an empty comparison (receivers = 0).
 ShadowComparison compareWithTruth(const ShadowStateFrame& frame, std::size_t minEdgePixels = kMinEdgePixels);
+
+// E_edge for a table: "%.3f" right-aligned in `width` columns, or "—" (too few edge pixels).
+std::string edgeText(const std::optional<double>& eEdge, int width);
+
+// The truth's verdict in words where the mismatch share is at least kVerdictShare: which way the
+// map is wrong and what usually causes it; empty where the map mostly agrees.
+constexpr double kVerdictShare = 0.05;
+std::string truthVerdict(double falseShadowShare, double falseLightShare);
 
 }  // namespace shadowlab

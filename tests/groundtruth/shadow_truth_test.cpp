@@ -60,6 +60,16 @@ TEST(ShadowTruth, EdgeErrorIsNotMeasuredBelowTheMinimumBoundary) {
     EXPECT_FALSE(compareWithTruth(f, 7).eEdge.has_value());
 }
 
+TEST(ShadowTruth, TableTextAndVerdictInWords) {
+    EXPECT_EQ(edgeText(0.25, 7), "  0.250");
+    EXPECT_EQ(edgeText(std::nullopt, 7), "      \u2014");
+    EXPECT_EQ(truthVerdict(0.01, 0.02), "");  // under kVerdictShare: the number says enough
+    const std::string light = truthVerdict(0.001, 0.58);
+    EXPECT_EQ(light.rfind("58% false light: something does not cast in the map that blocks light in the truth", 0), 0u)
+        << light;
+    EXPECT_EQ(truthVerdict(0.2, 0.05).rfind("20% false shadow", 0), 0u);
+}
+
 TEST(ShadowTruth, NonReceiversAreNeitherCountedNorBoundaries) {
     ShadowStateFrame f = halfLitFrame();
     for (int y = 0; y < 3; ++y) f.receiver[std::size_t(y) * 4 + 2] = 0;  // column 2 is sky
