@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 
 namespace shadowlab {
 namespace {
@@ -119,6 +120,25 @@ TEST(CasterModel, BackdropExcludedUnlessIncludedOrDetectionOff) {
     std::vector<std::uint32_t> casters{0, 1, 2};
     EXPECT_EQ(keepCasting(c.model, casters), 1u);
     EXPECT_EQ(casters, (std::vector<std::uint32_t>{0, 2}));
+}
+
+// The viewer's Ctrl+click: the nearest object under the ray switches its casting, and back.
+TEST(CasterModel, PickedObjectSwitchesItsCasting) {
+    const Scene sky = withShell(inwardBox({-40, -5, -40}, {40, 40, 40}), "SkyBox");
+    const std::vector<std::size_t> backdrops = detectBackdrops(sky);
+    EXPECT_EQ(pickInstance(sky, {0, 10, 0}, {0, -1, 0}), 1u);  // the box, above the ground
+    EXPECT_EQ(pickInstance(sky, {5, 10, 5}, {0, -1, 0}), 0u);  // the ground beside it
+    EXPECT_EQ(pickInstance(sky, {50, 10, 0}, {0, 1, 0}), SIZE_MAX);
+    CasterSettings settings;
+    toggleCasting(sky, 1, backdrops, settings);
+    EXPECT_EQ(settings.exclude, (std::vector<std::string>{"node1"}));
+    EXPECT_FALSE(chooseCasters(sky, settings, backdrops).model.instanceCastsShadow(1));
+    toggleCasting(sky, 1, backdrops, settings);
+    EXPECT_TRUE(settings.exclude.empty());
+    // The backdrop casts only once named in include.
+    const std::string said = toggleCasting(sky, 2, backdrops, settings);
+    EXPECT_EQ(settings.include, (std::vector<std::string>{"SkyBox"})) << said;
+    EXPECT_TRUE(chooseCasters(sky, settings, backdrops).model.instanceCastsShadow(2));
 }
 
 TEST(CasterModel, TruthSkipsTheExcludedBackdrop) {
