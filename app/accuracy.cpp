@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace shadowlab::app {
@@ -22,7 +23,7 @@ std::vector<RayReceiver> receiversOf(const MeasureFrame& frame) {
 
 // Ray-cast truth per pixel (0 where no receiver).
 std::vector<std::uint8_t> truthPerPixel(const MeasureFrame& frame, const RayScene& rays, const ShadowLight& light) {
-    const std::vector<std::uint8_t> lit = rays.visibleFromLight(receiversOf(frame), light);
+    const std::vector<std::uint8_t> lit = rays.visibleFromLight(receiversOf(frame), light, frame.casters);
     std::vector<std::uint8_t> perPixel(frame.pixelCount(), 0);
     std::size_t k = 0;
     for (std::size_t i = 0; i < frame.pixelCount(); ++i)

@@ -16,7 +16,7 @@ namespace shadowlab::app {
 
 struct GroundTruthFigures {
     double eTotal = 0.0, falseShadow = 0.0, falseLight = 0.0;  // shares of the receivers
-    double eEdge = 0.0;
+    std::optional<double> eEdge;  // none: too few truth-boundary pixels (kMinEdgePixels)
     std::size_t receivers = 0, truthBoundary = 0;
     double traceSeconds = 0.0;  // rays only; the BVH build is RayScene::buildSeconds
 };

@@ -85,6 +85,7 @@ void Renderer::setScene(const Scene& scene, bool streamTextures) {
     gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures);
     culler_.setScene(scene);
     scene_ = &scene;
+    backdrops_ = detectBackdrops(scene);
     ++sceneLoads_;
     ++sceneVersion_;
 }
@@ -134,8 +135,9 @@ void Renderer::cullView(Frame& frame, FrameStats& stats) const {
 void Renderer::cullCasters(Frame& frame, FrameStats& stats) const {
     const auto start = Clock::now();
     culler_.casters(frame.scene, frame.shadow, frame.settings.skip.hierarchicalCulling, frame.casters);
+    stats.castersExcluded = keepCasting(frame.casterModel, frame.casters);
     stats.castersDrawn = frame.casters.size();
-    stats.castersCulled = frame.scene.instances.size() - frame.casters.size();
+    stats.castersCulled = frame.scene.instances.size() - frame.casters.size() - stats.castersExcluded;
     stats.cullingCpuMs += msSince(start);
 }
 
@@ -165,7 +167,8 @@ ShadowMapKey Renderer::shadowMapKey(const Frame& frame) const {
     key.offsetMode = int(bias.mode);
     key.slopeFactor = slope ? bias.slopeFactor : 0.0;
     key.slopeUnits = slope ? bias.slopeUnits : 0.0;
-    key.backFaces = bias.backFaces;
+    key.singleSidedFaces = int(frame.casterModel.singleSided);
+    key.doubleSidedFaces = int(frame.casterModel.doubleSided);
     key.casters = frame.casters;
     return key;
 }
@@ -177,8 +180,13 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     const ViewFrustum view = viewFrustum(settings.camera, aspect);
     const ViewFrustum shadowCamera = shadowCameraRequest_ ? viewFrustum(*shadowCameraRequest_, aspect) : view;
     Frame frame{scene, settings, viewport, view, view.projectionMatrix() * view.viewMatrix(), shadowCamera,
-                resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}, {}};
+                resolveLight(scene, settings.light, seconds), false, {}, glm::dmat4(1.0), false, false, {}, {}, {},
+                false, {}, {}, {}, {}};
     stats.lightNote = frame.light.note;
+    casterChoice_ = chooseCasters(scene, settings.casters, backdrops_);
+    frame.casterModel = casterChoice_.model;
+    frame.shadowBounds = castingBounds(scene, frame.casterModel);
+    stats.casterFaces = casterFacesText(frame.casterModel);
     lastSetup_ = ShadowSetup{};  // a frame without shadows must not show the previous frame's B
     lastCascades_ = CascadeSetup{};
     if (!gpuScene_) return stats;
@@ -197,7 +205,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // (halved: a quarter-resolution pixel may miss thin geometry in front).
         if (psmAutoNear && 0.5 * visible.nearest > shadowView.zNear)
             shadowView.zNear = std::min(0.5 * visible.nearest, 0.5 * shadowView.zFar);
-        ShadowParams params = shadowParams(settings, shadowView, scene.bounds);
+        ShadowParams params = shadowParams(settings, shadowView, frame.shadowBounds);
         // Thesis 9.2.5: with a depth-only pass, z_f is the farthest visible depth.
         if (lispsmAutoFar && visible.farthest > 0.0)
             params.lispsm.virtualFar = std::clamp(visible.farthest, shadowView.zNear * 1.001, shadowView.zFar);
@@ -207,7 +215,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         params.receiverPoints = visible.receivers;
         params.fineReceiverPoints = visible.fineReceivers;  // spot lights only (visibleDepthRange)
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
-        frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), scene.bounds, params);
+        frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), frame.shadowBounds, params);
         stats.shadow = frame.shadow.diagnostics;
         lastSetup_ = frame.shadow;
         frame.shadowed = frame.shadow.valid;
@@ -282,7 +290,7 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
             setShadowClip(p, viewProjection, frame.shadowView.eye);
         });
-        drawScene(programs, frame, ownCamera ? shadowCameraVisible : frame.visible, false, stats.depthPrePass);
+        drawScene(programs, frame, ownCamera ? shadowCameraVisible : frame.visible, kCameraSides, stats.depthPrePass);
     };
     const VisibleDepthRange range = visibleDepth_.range(view, frame.settings.skip.asyncDepthReadback, drawDepth, stats);
     unbindPassResources({0});
@@ -331,8 +339,8 @@ void Renderer::drawShadowDepth(const Frame& frame, GLuint framebuffer, int size,
         program.set("uLinearRange", glm::vec2(frame.linear.nearDepth, frame.linear.farDepth));
     };
     const ProgramFor programs = passPrograms(frame.linearDepth ? shadowDepthLinear_ : shadowDepth_, true, s, setup);
-    // Back-face rendering (thesis 5.1, 9.3): cull the front faces so closed casters store their back.
-    drawScene(programs, frame, frame.casters, s.bias.backFaces, counts, Surfaces::All, frame.shadowMapMirrored);
+    // The caster model's faces (frame/caster_model.h); `back` is thesis 5.1's back-face rendering.
+    drawScene(programs, frame, frame.casters, frame.casterModel, counts, Surfaces::All, frame.shadowMapMirrored);
 
     glDisable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(0.0f, 0.0f);
@@ -405,7 +413,7 @@ void Renderer::shadowTermPass(const Frame& frame, FrameStats& stats) {
         setLightingUniforms(program, termFrame, false);
         program.set("uOutputMode", 2);
     });
-    drawScene(programs, frame, frame.visible, false, stats.forwardPass);
+    drawScene(programs, frame, frame.visible, kCameraSides, stats.forwardPass);
     glDisable(GL_DEPTH_TEST);
     unbindPassResources({0, 1});
     termTimer_.end();
@@ -495,11 +503,11 @@ void Renderer::forwardPass(const Frame& viewFrame, FrameStats& stats) {
     if (mode == ViewMode::AliasingErrorRaw) glDisable(GL_FRAMEBUFFER_SRGB);
 
     // Opaque and masked surfaces first, then blended ones over them without depth writes.
-    drawScene(programs, frame, frame.visible, false, stats.forwardPass, Surfaces::OpaqueAndMasked);
+    drawScene(programs, frame, frame.visible, kCameraSides, stats.forwardPass, Surfaces::OpaqueAndMasked);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
-    drawScene(programs, frame, frame.visible, false, stats.forwardPass, Surfaces::Blended);
+    drawScene(programs, frame, frame.visible, kCameraSides, stats.forwardPass, Surfaces::Blended);
 
     // Restore what this pass changed.
     glDisable(GL_BLEND);

@@ -10,6 +10,7 @@
 // What a frame skips when it does not need it is switchable in Settings::skip (docs/design.md).
 #include "resources/cascade_maps.h"
 #include "culling/instance_culling.h"
+#include "frame/caster_model.h"
 #include "frame/frame_setup.h"
 #include "frame/frame_stats.h"
 #include "gl/program.h"
@@ -88,6 +89,10 @@ public:
     GLuint cascadeMapTexture() const { return cascadeMaps().texture(); }
     int cascadeMapLayers() const { return cascadeMaps().layers(); }
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
+    // The caster model of the last frame, with the backdrops found on load and the notices (which
+    // instance was excluded and how to change it) for the viewer and `render`.
+    const CasterChoice& lastCasterChoice() const { return casterChoice_; }
+    const std::vector<std::size_t>& backdrops() const { return backdrops_; }
 
 private:
     Renderer() = default;
@@ -118,12 +123,17 @@ private:
     // `setup` the first time a draw uses it.
     static ProgramFor passPrograms(MaterialPrograms& programs, bool depthOnly, const Settings& settings,
                                    std::function<void(const gl::Program&)> setup);
+    // `sides`: which faces of single- and double-sided materials are drawn (its faces only; the
+    // shadow pass hands the frame's caster model, the camera's passes kCameraSides).
     void drawScene(const ProgramFor& programFor, const Frame& frame, const InstanceList& instances,
-                   bool cullFrontFaces, PassCounts& counts, Surfaces surfaces = Surfaces::All,
+                   const CasterModel& sides, PassCounts& counts, Surfaces surfaces = Surfaces::All,
                    bool targetMirrored = false) const;
     // Every material with the one `program` (the measurement pass).
-    void drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances, bool cullFrontFaces,
-                   PassCounts& counts, Surfaces surfaces = Surfaces::All, bool targetMirrored = false) const;
+    void drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances,
+                   const CasterModel& sides, PassCounts& counts, Surfaces surfaces = Surfaces::All,
+                   bool targetMirrored = false) const;
+    // What the camera sees: single-sided materials from the front (glTF 2.0 3.9.5), double-sided both.
+    inline static const CasterModel kCameraSides{CasterFaces::Front, CasterFaces::Both, {}};
 
     MaterialPrograms forward_;
     MaterialPrograms forwardCascaded_;    // forward.frag with CASCADES: the split picked by eye depth
@@ -134,6 +144,8 @@ private:
     std::unique_ptr<GpuScene> gpuScene_;
     InstanceCuller culler_;
     const Scene* scene_ = nullptr;    // the scene uploaded last
+    std::vector<std::size_t> backdrops_;  // detectBackdrops of the scene uploaded last
+    CasterChoice casterChoice_;           // the last frame's (lastCasterChoice)
     std::uint64_t sceneLoads_ = 0;    // bumped by setScene
     std::uint64_t sceneVersion_ = 0;  // bumped by setScene and updateInstances
     // The map of the last shadowed frame, out of one per compared view (selectShadowMap).

@@ -2,6 +2,7 @@
 // Everything one frame's passes share, built once per Renderer::render. Private to the renderer's
 // own files (renderer.cpp and the pass files beside it).
 #include "math/cascades.h"
+#include "frame/caster_model.h"
 #include "renderer.h"
 
 namespace shadowlab {
@@ -30,6 +31,8 @@ struct Renderer::Frame {
     bool cascaded = false;
     CascadeSetup cascades{};
     std::vector<InstanceList> cascadeCasters{};
+    CasterModel casterModel{};  // which triangles cast (frame/caster_model.h), for every map and the truth
+    Aabb shadowBounds{};        // castingBounds: what the shadow setups fit to
 };
 
 }  // namespace shadowlab

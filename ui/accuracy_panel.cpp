@@ -162,9 +162,30 @@ void drawFigures(const std::vector<AccuracyFigures>& methods) {
             [](const AccuracyFigures& m) { return 100.0 * m.falseShadow; }, "%.2f");
         row("false light %", "truth dark, rendered lit: leaks, peter-panning",
             [](const AccuracyFigures& m) { return 100.0 * m.falseLight; }, "%.2f");
-        row("E_edge", "mismatches per truth-boundary pixel", [](const AccuracyFigures& m) { return m.eEdge; }, "%.3f");
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextUnformatted("E_edge");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("mismatches per truth-boundary pixel; n/a below 100 boundary pixels (a view without "
+                              "shadow edges)");
+        for (std::size_t i = 0; i < methods.size() && i < 3; ++i) {
+            ImGui::TableSetColumnIndex(int(i) + 1);
+            if (methods[i].eEdge)
+                ImGui::Text("%.3f", *methods[i].eEdge);
+            else
+                ImGui::TextUnformatted("n/a");
+        }
     }
     ImGui::EndTable();
+    // The truth's verdict in words, once per distinct verdict (methods usually share the cause).
+    std::vector<std::string> said;
+    for (const AccuracyFigures& m : methods) {
+        if (m.verdict.empty() || std::find(said.begin(), said.end(), m.verdict) != said.end()) continue;
+        said.push_back(m.verdict);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s: %s", m.name.empty() ? methodName(m.method) : m.name.c_str(), m.verdict.c_str());
+        ImGui::PopStyleColor();
+    }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "settings/settings.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,9 @@ struct AccuracyFigures {
     double median = 0.0, p95 = 0.0, p99 = 0.0, bisectorP99 = 0.0, undersampled = 0.0;
     double distanceToLimit = 0.0;
     bool hasTruth = false;
-    double eTotal = 0.0, falseShadow = 0.0, falseLight = 0.0, eEdge = 0.0;
+    double eTotal = 0.0, falseShadow = 0.0, falseLight = 0.0;
+    std::optional<double> eEdge;  // none: too few truth-boundary pixels to measure
+    std::string verdict;          // the truth's verdict in words where the mismatch share is large
 };
 
 struct AccuracyView {

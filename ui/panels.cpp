@@ -284,9 +284,20 @@ bool drawBiasPanel(Settings& s) {
                           "Normal-offset bias: look up the map at the point moved along its normal by this many "
                           "texels (world size at the point) times sin(angle to the light); combines with the modes "
                           "above. 0 = off.");
-    changed |= checkbox("back faces", b.backFaces,
-                        "Render only the back faces into the shadow map (front faces culled): removes acne on "
-                        "closed objects, may unshadow their back sides (thesis 5.1 Fig. 5.5, 9.3).");
+    // The caster model (frame/caster_model.h): the map and the ray-cast truth read the same choice.
+    static const CasterFaces kFaces[] = {CasterFaces::Auto, CasterFaces::Front, CasterFaces::Back, CasterFaces::Both};
+    static const char* const kFaceNames[] = {"auto (both)", "front (light-facing)", "back (thesis 5.1)", "both"};
+    changed |= enumCombo("casting faces", s.casters.singleSided, kFaces, kFaceNames,
+                         "Which sides of single-sided materials cast, in the map and in the ray-cast truth. Front: "
+                         "a closed room of inward-facing walls casts nothing from outside. Back: back-face "
+                         "rendering, no acne on closed objects but leaks at contacts (thesis 5.1 Fig. 5.5, 9.3). "
+                         "Both: every surface blocks light.");
+    changed |= enumCombo("double-sided faces", s.casters.doubleSided, kFaces, kFaceNames,
+                         "The same for double-sided materials (drawn from both sides by the camera).");
+    changed |= checkbox("detect backdrops", s.casters.detectBackdrops,
+                        "A closed shell around the whole scene (sky box, dome) that would shadow everything casts "
+                        "nothing; casters.include names one that should cast anyway. Ctrl+click an object in the "
+                        "view to switch its casting off or on.");
     return changed;
 }
 

@@ -62,7 +62,7 @@ json caseJson(const BenchCaseResult& c) {
     j["depthBinsTrue"] = binsJson(a.depthBinsTrue);
     if (a.truth)
         j["groundTruth"] = {{"eTotal", a.truth->eTotal},           {"falseShadow", a.truth->falseShadow},
-                            {"falseLight", a.truth->falseLight},   {"eEdge", a.truth->eEdge},
+                            {"falseLight", a.truth->falseLight},   {"eEdge", a.truth->eEdge ? json(*a.truth->eEdge) : json(nullptr)},
                             {"receivers", a.truth->receivers},     {"truthBoundary", a.truth->truthBoundary},
                             {"traceSeconds", a.truth->traceSeconds}};
     json temporal = json::array();
@@ -142,7 +142,8 @@ std::string resultsCsv(const BenchResults& r) {
                       a.bisectorDistanceToLimit, a.truth ? std::to_string(a.truth->eTotal).c_str() : "",
                       a.truth ? std::to_string(a.truth->falseShadow).c_str() : "",
                       a.truth ? std::to_string(a.truth->falseLight).c_str() : "",
-                      a.truth ? std::to_string(a.truth->eEdge).c_str() : "", maxFlipShare(c), maxFlipShare(c, true),
+                      a.truth && a.truth->eEdge ? std::to_string(*a.truth->eEdge).c_str() : "", maxFlipShare(c),
+                      maxFlipShare(c, true),
                       quoted(c.error).c_str());
         out << line;
     }
@@ -167,11 +168,12 @@ void printTable(const BenchResults& r, std::ostream& out) {
         const std::string map =
             c.layers > 1 ? std::to_string(c.layers) + "x" + std::to_string(c.layerSize) : std::to_string(c.layerSize);
         std::snprintf(line, sizeof line,
-                      "%-34s %-10s %-9s %6.2f %-10.10s %9.1f %9.2f %8.3f %8.3f %8.3f %9.2f %7.2f%% %7.3f %6.3f%% %6.3f%%\n",
+                      "%-34s %-10s %-9s %6.2f %-10.10s %9.1f %9.2f %8.3f %8.3f %8.3f %9.2f %7.2f%% %s %6.3f%% %6.3f%%\n",
                       view.c_str(), methodChoiceName(c.method).c_str(), map.c_str(), double(c.mapTexels) / 1048576.0,
                       c.variant.c_str(), c.setupUsMedian, c.frameMsMedian,
                       c.gpuMsTotal, a.footprint.p99, a.bisector.p99, a.distanceToLimit,
-                      a.truth ? 100.0 * a.truth->eTotal : 0.0, a.truth ? a.truth->eEdge : 0.0, 100.0 * maxFlipShare(c),
+                      a.truth ? 100.0 * a.truth->eTotal : 0.0, edgeText(a.truth ? a.truth->eEdge : std::nullopt, 7).c_str(),
+                      100.0 * maxFlipShare(c),
                       100.0 * maxFlipShare(c, true));
         out << line;
     }

@@ -2,6 +2,7 @@
 // warnings). Exit 0 on success; on failure one message on stderr and a non-zero exit.
 // Textures are only sized from their headers, never decoded: info prints none of their pixels.
 #include "commands.h"
+#include "frame/caster_model.h"
 #include "scenes/gltf_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -51,6 +52,14 @@ void addInfoCommand(CLI::App& app) {
             throw CLI::RuntimeError(1);
         }
         std::cout << describeScene(*result.scene);
+        // The caster model with default settings: which mesh is a backdrop and how to change it.
+        const Scene& scene = *result.scene;
+        const CasterChoice casters = chooseCasters(scene, CasterSettings{}, detectBackdrops(scene));
+        std::cout << "casters: " << casterFacesText(casters.model) << "; "
+                  << (casters.backdrops.empty() ? std::string("no backdrop")
+                                                : std::to_string(casters.backdrops.size()) + " backdrop(s)")
+                  << "\n";
+        for (const std::string& n : casters.notices) std::cout << "  " << n << "\n";
     });
 }
 

@@ -100,8 +100,8 @@ AccuracyReport measureMethod(Renderer& renderer, const Scene& scene, const Setti
                 a.footprint.p99, a.footprint.max, 100.0 * a.footprint.undersampledFraction, a.bisector.p99,
                 a.distanceToLimit);
     if (a.truth)
-        std::printf("  %6.2f%% %12.2f%% %11.2f%% %7.3f", 100.0 * a.truth->eTotal, 100.0 * a.truth->falseShadow,
-                    100.0 * a.truth->falseLight, a.truth->eEdge);
+        std::printf("  %6.2f%% %12.2f%% %11.2f%% %s", 100.0 * a.truth->eTotal, 100.0 * a.truth->falseShadow,
+                    100.0 * a.truth->falseLight, edgeText(a.truth->eEdge, 7).c_str());
     std::printf("\n");
     if (settings.csm.enabled) printSplits(frame, renderer.lastCascadeSetup(), a.footprint);
     return a;
@@ -240,6 +240,9 @@ void runRender(RenderOptions options) {
         FrameStats stats = renderer->renderSettled(*scene, view, settings.animation.time,
                                             Viewport{target.framebuffer(), 0, 0, options.width, options.height});
         if (!stats.lightNote.empty() && i == 0) std::cerr << "shadowlab render: note: " << stats.lightNote << "\n";
+        if (i == 0)
+            for (const std::string& n : renderer->lastCasterChoice().notices)
+                std::cerr << "shadowlab render: note: " << n << "\n";
         RgbaImage part = target.readColor();
         if (all) drawLabel(part, 8, 8, labels[i], 3);
         image.blit(part, options.width * int(i), 0);

@@ -31,6 +31,12 @@ void addSettingsCommand(CLI::App& app) {
         for (const SettingDescription& d : settings)
             std::cout << "  " << std::setw(int(keyWidth)) << d.key << "  " << std::setw(int(typeWidth)) << d.type << "  "
                       << std::setw(int(rangeWidth)) << d.range << "  " << d.defaultValue << "\n";
+        std::cout << "\nCaster model (casters.*): one rule for the shadow map and the ray-cast truth. A triangle casts when its\n"
+                     "material's faces setting lets the light see that side (front: the side its winding faces; back:\n"
+                     "thesis 5.1's back-face rendering; auto = both) and its node casts: a backdrop (a closed shell that\n"
+                     "blocks every ray from the rest of the scene toward the sky, e.g. a sky box) casts nothing unless\n"
+                     "casters.detectBackdrops=false or casters.include names it; casters.exclude names more.\n"
+                     "bias.backFaces=true in older view files loads as casters.singleSided=back.\n";
         std::cout << "\nLoad limits (--limit KEY=N on info, render and the viewer; a scene over one is refused, an image over a "
                      "texture limit is skipped with a warning):\n";
         for (const std::string& line : describeLoadLimits(LoadLimits{})) std::cout << "  " << line << "\n";

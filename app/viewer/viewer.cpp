@@ -159,6 +159,10 @@ void handleInput(ViewerState& state, std::vector<InputEvent> events, GLFWwindow*
                     if (click && e.code == GLFW_MOUSE_BUTTON_LEFT && pressed != InsetKind::None &&
                         insetUnderCursor() == pressed)
                         state.enlargedInset = state.enlargedInset == pressed ? InsetKind::None : pressed;
+                    // Ctrl+click on the scene: that object casts or stops casting (caster model).
+                    else if (click && e.code == GLFW_MOUSE_BUTTON_LEFT && (e.mods & GLFW_MOD_CONTROL) &&
+                             pressed == InsetKind::None && !io.WantCaptureMouse)
+                        pickCaster(state, layout, toFramebuffer(window, state.drag.cursor()));
                 } else if (e.code == GLFW_MOUSE_BUTTON_LEFT || e.code == GLFW_MOUSE_BUTTON_RIGHT) {
                     const bool panel = panelWantsMouse();
                     state.pressedInset = panel ? InsetKind::None : insetUnderCursor();

@@ -29,6 +29,7 @@ ui::AccuracyFigures figuresOf(ShadowMethod method, const AccuracyReport& r) {
         f.falseShadow = r.truth->falseShadow;
         f.falseLight = r.truth->falseLight;
         f.eEdge = r.truth->eEdge;
+        f.verdict = truthVerdict(r.truth->falseShadow, r.truth->falseLight);
     }
     return f;
 }

@@ -1,5 +1,6 @@
 #include "viewer/viewer_open.h"
 
+#include "frame/caster_model.h"
 #include "scenes/animation.h"
 
 #include <GLFW/glfw3.h>
@@ -78,12 +79,35 @@ void addNotices(ui::ViewerStatus& status, const std::vector<std::string>& change
 void noteSceneNotices(ViewerState& state) {
     if (!state.scene) return;
     std::vector<std::string> now = sceneNotices(state.settings, state.scene->lights.size());
+    for (std::string& n : chooseCasters(*state.scene, state.settings.casters, state.backdrops).notices)
+        now.push_back(std::move(n));
     std::vector<std::string> fresh;
     for (const std::string& n : now)
         if (std::find(state.sceneNoticesShown.begin(), state.sceneNoticesShown.end(), n) == state.sceneNoticesShown.end())
             fresh.push_back(n);
     addNotices(state.status, fresh, "note: ");
     state.sceneNoticesShown = std::move(now);
+}
+
+void pickCaster(ViewerState& state, const Layout& layout, const glm::dvec2& p) {
+    if (!state.scene) return;
+    for (const InsetRect& v : layout.views) {
+        if (!contains(v, p.x, p.y) || v.width <= 0 || v.height <= 0) continue;
+        const ViewFrustum view = viewFrustum(state.settings.camera, double(v.width) / v.height);
+        const glm::dmat4 toWorld = glm::inverse(view.projectionMatrix() * view.viewMatrix());
+        const glm::dvec2 ndc{2.0 * (p.x - v.x) / v.width - 1.0, 1.0 - 2.0 * (p.y - v.y) / v.height};
+        auto unproject = [&](double z) {
+            const glm::dvec4 h = toWorld * glm::dvec4(ndc, z, 1.0);
+            return glm::dvec3(h) / h.w;
+        };
+        const glm::dvec3 from = unproject(-1.0), to = unproject(1.0);
+        const std::size_t picked = pickInstance(*state.scene, from, glm::normalize(to - from));
+        const std::string done = picked == SIZE_MAX ? std::string("nothing under the cursor to switch casting of")
+                                                    : toggleCasting(*state.scene, picked, state.backdrops,
+                                                                    state.settings.casters);
+        addNotices(state.status, {done}, "");
+        return;
+    }
 }
 
 void startSceneLoad(ViewerState& state, const std::string& file) {
@@ -145,6 +169,7 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
     state.posedTime = state.settings.animation.time;
     const auto uploadStart = std::chrono::steady_clock::now();
     renderer.setScene(scene, true);  // geometry now, the textures over the next frames
+    state.backdrops = renderer.backdrops();
     const double uploadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uploadStart).count();
     std::cerr << "shadowlab: opened " << file << " (loaded in " << ui::formatNumber(parseSeconds, 3)

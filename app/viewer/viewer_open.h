@@ -24,6 +24,9 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
 // The settings' notices about the scene (sceneNotices: a light.sceneLight beyond its lights,
 // light.animateSun under a scene light) into the toast, each once when it becomes true.
 void noteSceneNotices(ViewerState& state);
+// Ctrl+click in a view at framebuffer point `p` (top-left origin): the object under it switches
+// its casting (frame/caster_model.h: toggleCasting), with a notice saying which and how.
+void pickCaster(ViewerState& state, const Layout& layout, const glm::dvec2& p);
 
 // Clamping notices ("shadowMapSize 12345 -> 8192") into the toast and on stderr; `prefix` starts
 // each line ("adjusted " for sanitize's changes, "" for lines that are whole sentences).

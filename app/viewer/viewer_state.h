@@ -46,6 +46,7 @@ struct ViewerState {
     InsetKind pressedInset = InsetKind::None;   // the inset under the last press
     std::unique_ptr<SceneLoadJob> load;
     LoadOptions loadOptions;  // --limit budgets, for every scene the viewer opens
+    std::vector<std::size_t> backdrops;  // of the scene uploaded (frame/caster_model.h), for notices
     std::vector<std::string> sceneNoticesShown;  // sceneNotices() of the last check (shown once each)
     ui::AbCompare ab;  // A/B compare of two settings (ui/ab_panel.h)
     std::string abView;  // --ab, applied when the first scene arrives

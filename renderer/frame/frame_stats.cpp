@@ -31,6 +31,8 @@ std::string frameStatsJson(const FrameStats& s) {
         {"instancesCulledView", s.instances - s.instancesVisible},
         {"castersDrawn", s.castersDrawn},
         {"castersCulled", s.castersCulled},
+        {"castersExcluded", s.castersExcluded},
+        {"casterFaces", s.casterFaces},
         {"cullingCpuMs", s.cullingCpuMs},
         {"hierarchicalCulling", s.hierarchicalCulling},
         {"shadowMapSize", s.shadowMapSize},

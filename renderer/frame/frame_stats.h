@@ -41,6 +41,9 @@ struct FrameStats {
     std::size_t instancesVisible = 0;  // after view-frustum culling
     std::size_t castersDrawn = 0;
     std::size_t castersCulled = 0;
+    std::size_t castersExcluded = 0;  // instances the caster model keeps out (backdrops, casters.exclude)
+    // The caster model's faces as resolved ("single-sided both, double-sided both").
+    std::string casterFaces;
     double cullingCpuMs = 0.0;  // view + caster culling
     bool hierarchicalCulling = false;
     int shadowMapSize = 0;

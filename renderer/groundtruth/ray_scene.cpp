@@ -66,6 +66,52 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
+// What the caster filter needs of each geometry (by geometry ID): its instance, its material's
+// kind and its world-space triangles, whose front is counter-clockwise unless the node mirrors.
+struct CasterGeometry {
+    std::uint32_t instance = 0;
+    bool doubleSided = false;
+    bool mirrored = false;
+    const float* vertices = nullptr;
+    const std::uint32_t* indices = nullptr;
+};
+
+// An intersect context carrying the query's caster model to the context filter.
+struct CasterContext {
+    RTCIntersectContext context;  // first member: Embree hands the filter this address
+    const std::vector<CasterGeometry>* geometries = nullptr;
+    const CasterModel* model = nullptr;
+};
+
+// Does the front of this triangle face along `dir` (toward the light)?
+bool frontFaces(const CasterGeometry& g, unsigned triangle, const glm::vec3& dir) {
+    auto vertex = [&](unsigned k) {
+        const float* v = g.vertices + 3 * std::size_t(g.indices[3 * std::size_t(triangle) + k]);
+        return glm::vec3(v[0], v[1], v[2]);
+    };
+    const glm::vec3 a = vertex(0);
+    const glm::vec3 normal = glm::cross(vertex(1) - a, vertex(2) - a);
+    const float facing = glm::dot(normal, dir);
+    return g.mirrored ? facing < 0.0f : facing > 0.0f;
+}
+
+// The caster model on every candidate hit: the ray goes toward the light, so the light sees the
+// triangle's front where the front faces along the ray.
+void casterFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* ctx = reinterpret_cast<const CasterContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const unsigned geomID = RTCHitN_geomID(args->hit, args->N, i);
+        if (geomID >= ctx->geometries->size()) continue;
+        const CasterGeometry& g = (*ctx->geometries)[geomID];
+        const glm::vec3 dir(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                            RTCRayN_dir_z(args->ray, args->N, i));
+        const bool casts = ctx->model->instanceCastsShadow(g.instance) &&
+                           ctx->model->triangleCasts(g.doubleSided, frontFaces(g, RTCHitN_primID(args->hit, args->N, i), dir));
+        if (!casts) args->valid[i] = 0;
+    }
+}
+
 void reportEmbreeError(void* userPtr, RTCError, const char* message) {
     auto* error = static_cast<std::string*>(userPtr);
     if (error->empty()) *error = std::string("Embree: ") + (message ? message : "unknown error");
@@ -78,6 +124,7 @@ struct RayScene::Impl {
     RTCScene scene = nullptr;
     std::string deviceError;
     std::vector<AlphaMask> masks;  // stable addresses: reserved before geometries point at them
+    std::vector<CasterGeometry> geometries;  // by geometry ID
     double originOffset = 0.0;     // world units, pushes ray origins off their own surface
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
@@ -99,6 +146,7 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
     }
     rtcSetDeviceErrorFunction(impl.device, reportEmbreeError, &impl.deviceError);
     impl.scene = rtcNewScene(impl.device);
+    rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_MEDIUM);
 
     std::size_t primitiveCount = 0;
@@ -106,7 +154,8 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
         if (inst.mesh >= 0 && inst.mesh < int(scene.meshes.size())) primitiveCount += scene.meshes[inst.mesh].primitives.size();
     impl.masks.reserve(primitiveCount);
 
-    for (const MeshInstance& inst : scene.instances) {
+    for (std::size_t instance = 0; instance < scene.instances.size(); ++instance) {
+        const MeshInstance& inst = scene.instances[instance];
         if (inst.mesh < 0 || inst.mesh >= int(scene.meshes.size())) continue;
         for (const Primitive& prim : scene.meshes[std::size_t(inst.mesh)].primitives) {
             if (prim.indices.size() < 3 || prim.positions.empty()) continue;
@@ -132,6 +181,7 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
             for (std::size_t i = 0; i < 3 * triangles; ++i)
                 indices[i] = prim.indices[i] < vertexCount ? prim.indices[i] : 0;  // the loader validates; stay safe
             const bool known = prim.material >= 0 && prim.material < int(scene.materials.size());
+            const bool doubleSided = known && scene.materials[std::size_t(prim.material)].doubleSided;
             if (known && scene.materials[std::size_t(prim.material)].alphaMode == AlphaMode::Mask) {
                 const Material& m = scene.materials[std::size_t(prim.material)];
                 const bool textured = m.baseColorTexture >= 0 && m.baseColorTexture < int(scene.textures.size());
@@ -141,7 +191,9 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
                 rtcSetGeometryOccludedFilterFunction(geom, alphaMaskFilter);
             }
             rtcCommitGeometry(geom);
-            rtcAttachGeometry(impl.scene, geom);
+            const unsigned geomID = rtcAttachGeometry(impl.scene, geom);
+            if (impl.geometries.size() <= geomID) impl.geometries.resize(std::size_t(geomID) + 1);
+            impl.geometries[geomID] = {std::uint32_t(instance), doubleSided, inst.mirrored, vertices, indices};
             rtcReleaseGeometry(geom);
             rs->triangles_ += triangles;
         }
@@ -162,16 +214,24 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
 }
 
 std::vector<std::uint8_t> RayScene::visibleFromLight(const std::vector<RayReceiver>& receivers,
-                                                     const ShadowLight& light, int threads) const {
+                                                     const ShadowLight& light, const CasterModel& casters,
+                                                     int threads) const {
     std::vector<std::uint8_t> lit(receivers.size(), 0);
     const Impl& impl = *impl_;
     const bool directional = light.kind == ShadowLightKind::Directional;
     const glm::vec3 toSun = -glm::normalize(glm::vec3(light.direction));
     const glm::vec3 lightPosition(light.position);
     const float offset = float(impl.originOffset);
+    // Every triangle of every instance casting from both sides needs no filter (the common case).
+    const bool everyTriangleCasts = casters.instanceCasts.empty() && casters.singleSided == CasterFaces::Both &&
+                                    casters.doubleSided == CasterFaces::Both;
     auto traceRange = [&](std::size_t begin, std::size_t end) {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
+        CasterContext caster;
+        rtcInitIntersectContext(&caster.context);
+        caster.geometries = &impl.geometries;
+        caster.model = &casters;
+        if (!everyTriangleCasts) caster.context.filter = casterFilter;
+        RTCIntersectContext& context = caster.context;
         for (std::size_t i = begin; i < end; ++i) {
             const RayReceiver& r = receivers[i];
             const glm::vec3 toLight = directional ? toSun : lightPosition - r.position;

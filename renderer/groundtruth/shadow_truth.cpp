@@ -1,8 +1,11 @@
 #include "groundtruth/shadow_truth.h"
 
+#include <algorithm>
+#include <cstdio>
+
 namespace shadowlab {
 
-ShadowComparison compareWithTruth(const ShadowStateFrame& f) {
+ShadowComparison compareWithTruth(const ShadowStateFrame& f, std::size_t minEdgePixels) {
     ShadowComparison c;
     const std::size_t n = f.width > 0 && f.height > 0 ? std::size_t(f.width) * std::size_t(f.height) : 0;
     if (n == 0 || f.receiver.size() != n || f.shadowTerm.size() != n || f.truthLit.size() != n) return c;
@@ -31,8 +34,34 @@ ShadowComparison compareWithTruth(const ShadowStateFrame& f) {
     c.eTotal = mismatches / double(c.receivers);
     c.falseShadowShare = double(c.falseShadow) / double(c.receivers);
     c.falseLightShare = double(c.falseLight) / double(c.receivers);
-    c.eEdge = c.truthBoundary > 0 ? mismatches / double(c.truthBoundary) : 0.0;
+    if (c.truthBoundary > 0 && c.truthBoundary >= minEdgePixels) c.eEdge = mismatches / double(c.truthBoundary);
     return c;
+}
+
+std::string edgeText(const std::optional<double>& eEdge, int width) {
+    char text[64];
+    if (eEdge) {
+        std::snprintf(text, sizeof text, "%*.3f", width, *eEdge);
+        return text;
+    }
+    // "—" is 3 bytes and one column: pad by columns.
+    return std::string(std::size_t(std::max(0, width - 1)), ' ') + "\u2014";
+}
+
+std::string truthVerdict(double falseShadowShare, double falseLightShare) {
+    if (falseShadowShare + falseLightShare < kVerdictShare) return {};
+    char text[320];
+    if (falseLightShare >= falseShadowShare)
+        std::snprintf(text, sizeof text,
+                      "%.0f%% false light: something does not cast in the map that blocks light in the truth "
+                      "(faces culled by casters.singleSided / doubleSided, an excluded mesh, or a leak at contacts)",
+                      100.0 * falseLightShare);
+    else
+        std::snprintf(text, sizeof text,
+                      "%.0f%% false shadow: the map shadows what the truth lights (acne: raise the depth offset; or a "
+                      "caster the truth ignores)",
+                      100.0 * falseShadowShare);
+    return text;
 }
 
 }  // namespace shadowlab

@@ -1,6 +1,8 @@
 #pragma once
 // What the measurement pass (renderer/resources/measure_pass.h) reads back for one view: per pixel, the
 // float values the accuracy instruments work on. GL-free; rows bottom-up as GL reads them.
+#include "frame/caster_model.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -24,6 +26,8 @@ struct MeasureFrame {
     double fovYRad = 1.0;
     double zNear = 0.1, zFar = 100.0;
     int shadowMapSize = 0;
+    // What cast shadows in this frame's map: the truth judging it traces against the same model.
+    CasterModel casters;
 
     std::size_t pixelCount() const { return std::size_t(width) * std::size_t(height); }
 };

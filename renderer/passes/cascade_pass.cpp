@@ -45,7 +45,7 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     params.manualSplits = s.csm.manualSplits;
     params.perSplit = s.csm.perSplit;
     params.mapResolution = s.shadowMapSize;
-    params.base = shadowParams(s, frame.shadowView, frame.scene.bounds);
+    params.base = shadowParams(s, frame.shadowView, frame.shadowBounds);
     // The visible depth range and receivers (depth pre-pass): the splits cover what is seen, and
     // each split's LiSPSM search measures the receivers of its own range (math/cascades.h).
     if (s.csm.fitVisibleDepth) {
@@ -55,7 +55,7 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
         params.base.receiverPoints = visible.receivers;
         params.base.fineReceiverPoints = visible.fineReceivers;  // each split's own (math/cascades.h)
     }
-    frame.cascades = computeCascadeSetup(frame.shadowView, shadowLight(frame.light), frame.scene.bounds, params);
+    frame.cascades = computeCascadeSetup(frame.shadowView, shadowLight(frame.light), frame.shadowBounds, params);
     lastCascades_ = frame.cascades;
     const CascadeSplit* first = firstValidSplit(frame.cascades);
     if (!frame.cascades.error.empty() || !first) {
@@ -79,9 +79,11 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
         const CascadeSplit& split = frame.cascades.splits[i];
         if (!split.setup.valid) continue;
         culler_.casters(frame.scene, split.setup, s.skip.hierarchicalCulling, frame.cascadeCasters[i]);
+        stats.castersExcluded += keepCasting(frame.casterModel, frame.cascadeCasters[i]);
         stats.castersDrawn += frame.cascadeCasters[i].size();
     }
-    stats.castersCulled = frame.scene.instances.size() * frame.cascades.splits.size() - stats.castersDrawn;
+    stats.castersCulled =
+        frame.scene.instances.size() * frame.cascades.splits.size() - stats.castersDrawn - stats.castersExcluded;
     stats.cullingCpuMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 

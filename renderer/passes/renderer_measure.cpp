@@ -69,7 +69,7 @@ void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     program.set("uPixelRayDy", glm::vec3(up * perPixel));
     if (!frame.shadowed) program.set("uShadowTexel", glm::vec2(1.0f));
     PassCounts drawCounts;
-    drawScene(program, frame, frame.visible, false, drawCounts, Surfaces::OpaqueAndMasked);
+    drawScene(program, frame, frame.visible, kCameraSides, drawCounts, Surfaces::OpaqueAndMasked);
 
     glDisable(GL_DEPTH_TEST);
     for (GLuint unit : {0u, 1u, 2u}) {
@@ -87,6 +87,7 @@ void Renderer::measurePass(const Frame& frame, FrameStats& stats) {
     out.zNear = frame.view.zNear;
     out.zFar = frame.view.zFar;
     out.shadowMapSize = frame.cascaded ? cascadeMaps().size() : frame.shadowed ? shadowMap().size() : 0;
+    out.casters = frame.casterModel;
     stats.passes.push_back(
         {"measure (+ read-back)", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count(),
          0.0});

@@ -25,18 +25,16 @@ Renderer::ProgramFor Renderer::passPrograms(MaterialPrograms& programs, bool dep
 }
 
 void Renderer::drawScene(const gl::Program& program, const Frame& frame, const InstanceList& instances,
-                         bool cullFrontFaces, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
+                         const CasterModel& sides, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
     const DrawProgram only{&program, program.location("uMaterial")};
-    drawScene([&](const GpuMaterial&) { return only; }, frame, instances, cullFrontFaces, counts, surfaces,
-              targetMirrored);
+    drawScene([&](const GpuMaterial&) { return only; }, frame, instances, sides, counts, surfaces, targetMirrored);
 }
 
 void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const InstanceList& instances,
-                         bool cullFrontFaces, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
+                         const CasterModel& sides, PassCounts& counts, Surfaces surfaces, bool targetMirrored) const {
     if (instances.empty()) return;
     const Scene& scene = frame.scene;
     gpuScene_->bindVertexArray();
-    glCullFace(cullFrontFaces ? GL_FRONT : GL_BACK);
     const gl::Program* current = nullptr;
     GLuint boundTexture = ~0u;
     auto draw = [&](const GpuPrimitive& prim, GLuint first, GLsizei count, bool mirrored) {
@@ -53,9 +51,15 @@ void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const
             glBindSampler(0, m.sampler);
             boundTexture = m.texture;
         }
-        // Double-sided surfaces are drawn from both sides in every pass.
-        if (m.doubleSided) glDisable(GL_CULL_FACE);
-        else glEnable(GL_CULL_FACE);
+        // GL's front is the side facing the target (the light in the shadow pass, once the winding
+        // below is set): `front` culls GL's back faces, `back` its front faces, `both` nothing.
+        const CasterFaces faces = sides.faces(m.doubleSided);
+        if (faces == CasterFaces::Both) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(faces == CasterFaces::Front ? GL_BACK : GL_FRONT);
+        }
         // A negative-scale node flips the winding, and so does a mirroring target projection.
         glFrontFace(mirrored != targetMirrored ? GL_CW : GL_CCW);
         glDrawElementsInstancedBaseVertexBaseInstance(

@@ -14,7 +14,7 @@ bool ShadowMapKey::operator==(const ShadowMapKey& o) const {
            worldToShadowClip == o.worldToShadowClip && reversedDepth == o.reversedDepth &&
            linearDepth == o.linearDepth && (!linearDepth || sameLinear(linear, o.linear)) && mirrored == o.mirrored &&
            offsetMode == o.offsetMode && slopeFactor == o.slopeFactor && slopeUnits == o.slopeUnits &&
-           backFaces == o.backFaces && casters == o.casters;
+           singleSidedFaces == o.singleSidedFaces && doubleSidedFaces == o.doubleSidedFaces && casters == o.casters;
 }
 
 gl::SamplerObject createCompareSampler(bool linear, bool reversed) {

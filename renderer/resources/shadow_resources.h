@@ -26,7 +26,7 @@ struct ShadowMapKey {
     bool mirrored = false;  // winding flip of the warp
     int offsetMode = 0;     // DepthOffset: slope-scale offsets are rendered into the map
     double slopeFactor = 0.0, slopeUnits = 0.0;
-    bool backFaces = false;
+    int singleSidedFaces = 0, doubleSidedFaces = 0;  // CasterFaces the pass rasterises
     std::vector<std::uint32_t> casters;
     bool operator==(const ShadowMapKey& o) const;
 };

@@ -56,8 +56,12 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg
                                    sunDegreesPerSecond)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear, guard)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, backFaces,
-                                   normalOffset)
+NLOHMANN_JSON_SERIALIZE_ENUM(CasterFaces, {{CasterFaces::Front, "front"},
+                                           {CasterFaces::Back, "back"},
+                                           {CasterFaces::Both, "both"},
+                                           {CasterFaces::Auto, "auto"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, normalOffset)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CasterSettings, singleSided, doubleSided, detectBackdrops, exclude, include)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CascadeSettings, enabled, splits, lambda, perSplit, blendBand, manualSplits,
                                    colorSplits, fitVisibleDepth)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, edgeAwareBlur,
@@ -77,7 +81,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
                                    groupedDraws, shaderVariants)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
-                                   csm, filter, overlays, compare, animation, skip, display)
+                                   casters, csm, filter, overlays, compare, animation, skip, display)
 
 namespace {
 
@@ -99,6 +103,12 @@ std::string lineAndColumn(std::string_view text, std::size_t byte) {
     return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+// Settings holding node or mesh names (glob patterns), bounded so a file cannot make every frame
+// match megabytes of patterns.
+constexpr std::size_t kMaxNamePatterns = 256;
+constexpr std::size_t kMaxNamePatternLength = 256;
+bool isNameList(std::string_view key) { return key == "casters.exclude" || key == "casters.include"; }
+
 // What a setting takes, in words, for messages: "a whole number in 256 .. 8192".
 std::string expected(const std::string& key, const json& slot) {
     double lo = 0, hi = 0;
@@ -114,6 +124,9 @@ std::string expected(const std::string& key, const json& slot) {
     if (slot.is_string()) return "one of " + settingChoices(key);
     if (key == "compare.methods") return "a list of up to 3 of " + settingChoices(key);
     if (key == "csm.manualSplits") return "a list of up to " + std::to_string(kMaxCascadeSplits - 1) + " finite numbers";
+    if (isNameList(key))
+        return "a list of up to " + std::to_string(kMaxNamePatterns) + " names or patterns of up to " +
+               std::to_string(kMaxNamePatternLength) + " characters";
     return "3 finite numbers [x, y, z]";
 }
 
@@ -155,6 +168,11 @@ bool checkLeaf(const json& slot, const json& value, const std::string& key, json
                 return false;
             }
         out = value;
+    } else if (isNameList(key)) {
+        if (!value.is_array() || value.size() > kMaxNamePatterns) return refuse();
+        for (const json& v : value)
+            if (!v.is_string() || v.get<std::string>().size() > kMaxNamePatternLength) return refuse();
+        out = value;
     } else if (key == "csm.manualSplits") {  // order and count are checked by sanitize()
         if (!value.is_array() || value.size() > std::size_t(kMaxCascadeSplits - 1)) return refuse();
         for (const json& v : value)
@@ -193,7 +211,29 @@ bool applyPatch(json& target, const json& patch, const std::string& path, std::s
     return true;
 }
 
-bool fromJson(const json& patch, Settings& settings, std::string& error) {
+// bias.backFaces (a bool, before the caster model) still loads: true is thesis 5.1's back-face
+// rendering (casters.singleSided = back); false undoes it and otherwise keeps the caster model as
+// it is (every full settings dump had it, so false cannot mean "front faces only").
+bool migrateBackFaces(json& patch, const Settings& settings, std::string& error) {
+    if (!patch.is_object() || !patch.contains("bias") || !patch["bias"].is_object() ||
+        !patch["bias"].contains("backFaces"))
+        return true;
+    const json value = patch["bias"]["backFaces"];
+    if (!value.is_boolean()) {
+        error = "setting 'bias.backFaces' (now casters.singleSided) expects true or false, got " + shown(value);
+        return false;
+    }
+    patch["bias"].erase("backFaces");
+    if (patch.contains("casters") && patch["casters"].is_object() && patch["casters"].contains("singleSided")) return true;
+    if (value.get<bool>())
+        patch["casters"]["singleSided"] = "back";
+    else if (settings.casters.singleSided == CasterFaces::Back)
+        patch["casters"]["singleSided"] = "auto";
+    return true;
+}
+
+bool fromJson(json patch, Settings& settings, std::string& error) {
+    if (!migrateBackFaces(patch, settings, error)) return false;
     json merged = settings;
     if (!applyPatch(merged, patch, "", error)) return false;
     try {
@@ -220,7 +260,7 @@ void collectKeys(const json& j, const std::string& path, std::vector<std::string
 }
 
 // "1,2,3" or "ssm,psm" into a JSON array: numbers where every item is one, else names.
-json listValue(const std::string& value) {
+json listValue(const std::string& value, bool namesOnly) {
     json numbers = json::array(), names = json::array();
     bool allNumbers = true;
     std::istringstream items(value);
@@ -232,7 +272,7 @@ json listValue(const std::string& value) {
         else
             allNumbers = false;
     }
-    return allNumbers && !numbers.empty() ? numbers : names;
+    return allNumbers && !numbers.empty() && !namesOnly ? numbers : names;
 }
 
 }  // namespace
@@ -266,6 +306,14 @@ bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& 
     }
     const std::string key(keyEqualsValue.substr(0, eq));
     const std::string value(keyEqualsValue.substr(eq + 1));
+    if (key == "bias.backFaces") {  // the caster model's predecessor (migrateBackFaces)
+        bool b = false;
+        if (!parseBool(value, b)) {
+            error = "setting 'bias.backFaces' expects true/false, got '" + cut(value) + "'";
+            return false;
+        }
+        return fromJson(json{{"bias", {{"backFaces", b}}}}, settings, error);
+    }
     const json current = settings;
     const json* slot = &current;
     std::vector<std::string> parts;
@@ -295,7 +343,7 @@ bool setByKey(Settings& settings, std::string_view keyEqualsValue, std::string& 
     } else if (slot->is_string()) {
         parsed = value;
     } else if (slot->is_array()) {  // vectors and method lists: comma separated
-        parsed = listValue(value);
+        parsed = listValue(value, isNameList(key));
     } else {
         error = "setting '" + key + "' is a group; set one of its members (see `shadowlab settings`)";
         return false;

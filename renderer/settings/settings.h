@@ -14,7 +14,7 @@
 
 namespace shadowlab {
 
-// Thesis ch. 5, Fig. 5.6: depth distribution x offset, plus back-face rendering.
+// Thesis ch. 5, Fig. 5.6: depth distribution x offset (back-face rendering: CasterSettings).
 // Auto: hyperbolic for the uniform maps, linear for the perspective warps (LiSPSM, PSM, LiSPSM
 // splits). Measured (slope bias, PCF 2x2, 640x360, ground truth): one LiSPSM map on the street
 // with the sun behind lost its car and wall shadows with hyperbolic z (E_total 3.89%, 3.86% false
@@ -83,12 +83,31 @@ struct BiasSettings {
     double constant = 0.0005;      // depth units added in the compare (mode == Constant)
     double slopeFactor = 2.0;      // glPolygonOffset factor (paper defaults 2.0 / 4.0)
     double slopeUnits = 4.0;       // glPolygonOffset units
-    bool backFaces = false;        // render back faces into the shadow map (front faces culled)
     // Normal-offset bias: the lookup moves along the receiver's normal by this many texels (the
     // map's world texel size at the point) times sin(angle between normal and light), so grazing
     // receivers move most; combinable with every mode above. 0 = off.
     double normalOffset = 0.0;
     bool operator==(const BiasSettings&) const = default;
+};
+
+// Which triangles cast shadows, in the shadow map and in the ray-cast truth alike
+// (frame/caster_model.h): the sides of single-sided and of double-sided materials the light may
+// see (front: the side the material's winding faces; thesis 5.1's back-face rendering is `back`),
+// and which meshes cast at all. Auto resolves to `both` for either kind: a surface blocks light
+// from either side, so closed single-sided rooms are shadowed, and closed casters keep their
+// light-facing side nearest in the map (no new acne; docs/caster-model.md has the measurement).
+// A backdrop (a closed shell around everything else: a sky box or dome) casts nothing unless
+// `detectBackdrops` is off or `include` names it.
+enum class CasterFaces { Front, Back, Both, Auto };
+struct CasterSettings {
+    CasterFaces singleSided = CasterFaces::Auto;
+    CasterFaces doubleSided = CasterFaces::Auto;
+    bool detectBackdrops = true;
+    // Node or mesh names (glob patterns: * and ?) that cast nothing / that always cast (wins over
+    // both `exclude` and the backdrop rule).
+    std::vector<std::string> exclude;
+    std::vector<std::string> include;
+    bool operator==(const CasterSettings&) const = default;
 };
 
 // Cascaded (parallel-split) shadow maps, Zhang et al. 2006 (math/cascades.h). `enabled` is what
@@ -195,6 +214,7 @@ struct Settings {
     LispsmSettings lispsm;
     PsmSettings psm;
     BiasSettings bias;
+    CasterSettings casters;
     CascadeSettings csm;
     FilterSettings filter;
     OverlaySettings overlays;

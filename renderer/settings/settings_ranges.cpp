@@ -88,6 +88,8 @@ const Choices kChoices[] = {
     {"light.source", "scene, sun, spot"},
     {"bias.distribution", "hyperbolic, linear, auto"},
     {"bias.mode", "none, constant, slope"},
+    {"casters.singleSided", "front, back, both, auto"},
+    {"casters.doubleSided", "front, back, both, auto"},
     {"csm.perSplit", "ssm, stable, lispsm"},
     {"filter.filter", "nearest, pcf2x2, pcf3x3, pcf4x4"},
     {"compare.methods", methodChoiceNames()},  // one-map and cascade names (settings/method_choice.h)
@@ -232,6 +234,12 @@ std::vector<SettingDescription> describeSettings() {
             std::string names;
             for (const json& m : *value) names.append(names.empty() ? "" : ",").append(m.get<std::string>());
             d.defaultValue = names;
+        } else if (key == "casters.exclude" || key == "casters.include") {
+            d.type = "names";
+            d.range = key == "casters.exclude"
+                          ? "node or mesh names or patterns (* ?) that cast no shadow, comma separated"
+                          : "node or mesh names or patterns (* ?) that always cast (a detected backdrop too)";
+            d.defaultValue = "[] (empty)";
         } else if (key == "csm.manualSplits") {
             d.type = "numbers";
             d.range = "csm.splits - 1 increasing fractions of [near, far] in (0, 1); empty: the practical scheme";

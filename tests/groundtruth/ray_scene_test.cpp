@@ -16,6 +16,8 @@ ShadowLight sunTravelling(glm::dvec3 direction) {
 
 RayReceiver onGround(float x, float z) { return {{x, 0.0f, z}, {0.0f, 1.0f, 0.0f}}; }
 
+const CasterModel kEveryCaster{};  // every triangle, both sides: the truth before a caster model
+
 std::unique_ptr<RayScene> build(const Scene& scene) {
     std::string error;
     auto rs = RayScene::build(scene, error);
@@ -29,7 +31,7 @@ TEST(RayScene, GroundUnderTheBoxIsShadowedAndOpenGroundLit) {
     ASSERT_TRUE(rs);
     EXPECT_EQ(rs->triangleCount(), 24u);
     const auto lit = rs->visibleFromLight({onGround(0, 0), onGround(0.9f, -0.9f), onGround(5, 5), onGround(1.1f, 0)},
-                                          sunTravelling({0, -1, 0}), 2);
+                                          sunTravelling({0, -1, 0}), kEveryCaster, 2);
     EXPECT_EQ(lit, (std::vector<std::uint8_t>{0, 0, 1, 1}));
 }
 
@@ -39,7 +41,7 @@ TEST(RayScene, SlantedSunMovesTheShadow) {
     auto rs = build(scene);
     ASSERT_TRUE(rs);
     const auto lit = rs->visibleFromLight({onGround(2.5f, 0), onGround(3.5f, 0), onGround(-1.5f, 0)},
-                                          sunTravelling({1, -1, 0}));
+                                          sunTravelling({1, -1, 0}), kEveryCaster);
     EXPECT_EQ(lit, (std::vector<std::uint8_t>{0, 1, 1}));
 }
 
@@ -48,7 +50,7 @@ TEST(RayScene, ReceiverOnTheCasterTopIsLitNotSelfShadowed) {
     auto rs = build(scene);
     ASSERT_TRUE(rs);
     // The box's top face at y = 2: the offset origin must not hit its own triangle.
-    const auto lit = rs->visibleFromLight({{{0.3f, 2.0f, -0.2f}, {0, 1, 0}}}, sunTravelling({0, -1, 0}));
+    const auto lit = rs->visibleFromLight({{{0.3f, 2.0f, -0.2f}, {0, 1, 0}}}, sunTravelling({0, -1, 0}), kEveryCaster);
     EXPECT_EQ(lit[0], 1);
 }
 
@@ -60,10 +62,10 @@ TEST(RayScene, SpotSegmentEndsAtTheLight) {
     spot.kind = ShadowLightKind::Spot;
     spot.direction = {0, -1, 0};
     spot.position = {0, 1.5, 0};  // inside the box: everything outside is shadowed by its walls ...
-    const auto inside = rs->visibleFromLight({onGround(5, 0)}, spot);
+    const auto inside = rs->visibleFromLight({onGround(5, 0)}, spot, kEveryCaster);
     EXPECT_EQ(inside[0], 0);
     spot.position = {5, 1.0, 0};  // ... a spot beside the box lights the ground below it
-    const auto beside = rs->visibleFromLight({onGround(5, 0), onGround(-2, 0)}, spot);
+    const auto beside = rs->visibleFromLight({onGround(5, 0), onGround(-2, 0)}, spot, kEveryCaster);
     EXPECT_EQ(beside, (std::vector<std::uint8_t>{1, 0}));
 }
 
@@ -99,7 +101,7 @@ TEST(RayScene, AlphaMaskedTrianglesLetLightThroughTheirHoles) {
     auto rs = build(scene);
     ASSERT_TRUE(rs);
     const auto lit = rs->visibleFromLight({onGround(-0.6f, 0.3f), onGround(0.6f, 0.3f), onGround(-0.6f, -0.7f)},
-                                          sunTravelling({0, -1, 0}));
+                                          sunTravelling({0, -1, 0}), kEveryCaster);
     EXPECT_EQ(lit, (std::vector<std::uint8_t>{1, 0, 1}));
 }
 
@@ -108,7 +110,7 @@ TEST(RayScene, OpaqueAndBlendedSurfacesBlockFully) {
         const Scene scene = maskedQuadScene(mode);
         auto rs = build(scene);
         ASSERT_TRUE(rs);
-        const auto lit = rs->visibleFromLight({onGround(-0.6f, 0.3f)}, sunTravelling({0, -1, 0}));
+        const auto lit = rs->visibleFromLight({onGround(-0.6f, 0.3f)}, sunTravelling({0, -1, 0}), kEveryCaster);
         EXPECT_EQ(lit[0], 0) << int(mode);
     }
 }
@@ -118,8 +120,8 @@ TEST(RayScene, EmptySceneLightsEverything) {
     auto rs = build(empty);
     ASSERT_TRUE(rs);
     EXPECT_EQ(rs->triangleCount(), 0u);
-    EXPECT_EQ(rs->visibleFromLight({onGround(0, 0)}, sunTravelling({0, -1, 0}))[0], 1);
-    EXPECT_TRUE(rs->visibleFromLight({}, sunTravelling({0, -1, 0})).empty());
+    EXPECT_EQ(rs->visibleFromLight({onGround(0, 0)}, sunTravelling({0, -1, 0}), kEveryCaster)[0], 1);
+    EXPECT_TRUE(rs->visibleFromLight({}, sunTravelling({0, -1, 0}), kEveryCaster).empty());
 }
 
 }  // namespace

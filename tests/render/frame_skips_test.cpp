@@ -121,7 +121,7 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.camera.yawDeg += 2.0; }));  // LiSPSM follows the view
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.shadowMapSize = 1024; }));
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.bias.slopeFactor = 3.0; }));
-    EXPECT_FALSE(reusedAfter([](Settings& c) { c.bias.backFaces = true; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.casters.singleSided = CasterFaces::Back; }));
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.skip.reuseShadowMap = false; }));
     // Moved casters (animation): the same settings, new instance matrices.
     MeshInstance& box = scene.instances[1];

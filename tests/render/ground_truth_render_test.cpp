@@ -15,8 +15,8 @@ protected:
         ShadowComparison comparison;
         std::size_t truthDark = 0;
     };
-    Result compare(const Settings& settings) {
-        const Scene scene = planeBoxScene(glm::normalize(glm::dvec3(1.0, -1.2, 0.4)));
+    Result compare(const Settings& settings) { return compare(planeBoxScene(glm::normalize(glm::dvec3(1.0, -1.2, 0.4))), settings); }
+    Result compare(const Scene& scene, const Settings& settings) {
         std::string error;
         auto renderer = Renderer::create(error);
         EXPECT_TRUE(renderer) << error;
@@ -29,7 +29,7 @@ protected:
         std::vector<RayReceiver> receivers;
         for (std::size_t i = 0; i < frame.pixelCount(); ++i)
             if (frame.receiver[i]) receivers.push_back({frame.position[i], frame.normal[i]});
-        const auto lit = rays->visibleFromLight(receivers, shadowLight(resolveLight(scene, settings.light, 0.0)));
+        const auto lit = rays->visibleFromLight(receivers, shadowLight(resolveLight(scene, settings.light, 0.0)), frame.casters);
         ShadowStateFrame states{kWidth, kHeight, frame.receiver, frame.shadowTerm, std::vector<std::uint8_t>(frame.pixelCount(), 0)};
         Result r;
         for (std::size_t i = 0, k = 0; i < frame.pixelCount(); ++i)
@@ -67,6 +67,59 @@ TEST_F(GroundTruthRender, AcneWithoutBiasIsCaughtAsFalseShadow) {
     ASSERT_GT(acne.comparison.receivers, 20000u);
     EXPECT_GT(acne.comparison.falseShadow, acne.comparison.receivers / 20) << "false shadow " << acne.comparison.falseShadow;
     EXPECT_LT(acne.comparison.falseLight, acne.comparison.receivers / 100);
+}
+
+// Ground (a thin box, top at y = 0) under a single-sided 3 x 3 m quad at y = 1.5, the sun from
+// above. `frontUp`: the quad's front (glTF winding) faces the sun; `mirrored`: its node scales x
+// by -1, which flips the winding the front is read from (glTF 2.0 3.7.4).
+Scene groundAndQuad(bool frontUp, bool mirrored) {
+    Scene s = planeBoxScene(glm::normalize(glm::dvec3(0.3, -1.0, 0.2)));
+    Primitive quad;
+    quad.material = 1;  // "Box": single-sided
+    const float y = 1.5f;
+    quad.positions = {{-1.5f, y, -1.5f}, {1.5f, y, -1.5f}, {1.5f, y, 1.5f}, {-1.5f, y, 1.5f}};
+    quad.normals.assign(4, {0.0f, frontUp ? 1.0f : -1.0f, 0.0f});
+    // Counter-clockwise seen from above: (0, 3, 2) and (0, 2, 1) wind around +Y.
+    quad.indices = frontUp ? std::vector<std::uint32_t>{0, 3, 2, 0, 2, 1} : std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3};
+    for (const glm::vec3& v : quad.positions) quad.bounds.extend(glm::dvec3(v));
+    s.meshes[1] = {"Quad", {quad}};
+    s.instances.pop_back();
+    s.nodes.pop_back();
+    s.bounds = s.instances[0].worldBounds;
+    // Mirrored: the node scales x by -1. The front still faces `frontUp`'s way (the normal matrix
+    // keeps y), while the world-space vertices wind the other way round: a reader that ignores the
+    // mirror takes the wrong side for the front.
+    addInstance(s, 1, mirrored ? glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)) : glm::dmat4(1.0));
+    return s;
+}
+
+// One caster model by construction: for a single-sided quad seen by the light from its front or
+// its back (and through a mirroring node), the map and the rays say shadow or light together
+// under every faces setting, and they say what the model says.
+TEST_F(GroundTruthRender, MapAndTruthAgreeOnWhichFacesCast) {
+    for (bool frontUp : {true, false})
+        for (bool mirrored : {false, true}) {
+            if (mirrored && !frontUp) continue;  // the mirror case once: front up through the mirror
+            const Scene scene = groundAndQuad(frontUp, mirrored);
+            for (CasterFaces faces : {CasterFaces::Front, CasterFaces::Back, CasterFaces::Both, CasterFaces::Auto}) {
+                Settings s = lookAt({5.0, 7.0, 8.0}, {0.0, 0.0, 0.0});
+                s.method = ShadowMethod::SsmFocused;
+                s.casters.singleSided = faces;
+                const Result r = compare(scene, s);
+                CasterModel model;
+                model.singleSided = resolvedFaces(faces);
+                const bool quadCasts = model.triangleCasts(false, frontUp);
+                const std::string what = std::string(frontUp ? "front" : "back") + " toward the light" +
+                                         (mirrored ? " (mirrored)" : "") + ", faces " + std::to_string(int(faces));
+                ASSERT_GT(r.comparison.receivers, 20000u) << what;
+                if (quadCasts)
+                    EXPECT_GT(r.truthDark, 1000u) << what;  // the quad's shadow on the ground
+                else
+                    EXPECT_LT(r.truthDark, 100u) << what;
+                EXPECT_LT(r.comparison.eTotal, 0.01) << what << ": false shadow " << r.comparison.falseShadow
+                                                     << ", false light " << r.comparison.falseLight;
+            }
+        }
 }
 
 }  // namespace

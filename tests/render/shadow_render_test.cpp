@@ -249,7 +249,7 @@ protected:
         const Scene scene = planeBoxScene(light);
         Settings s = shadowView(ShadowMethod::SsmFocused);
         s.bias.mode = mode;
-        s.bias.backFaces = backFaces;
+        s.casters.singleSided = backFaces ? CasterFaces::Back : CasterFaces::Front;
         s.bias.distribution = distribution;
         s.bias.normalOffset = normalOffset;
         s.csm.enabled = cascades;

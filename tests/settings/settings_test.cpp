@@ -219,6 +219,42 @@ TEST(Settings, CompareMethodsAreNamesWithCascadesAndOldViewFilesStillLoad) {
     EXPECT_NE(error.find("csm-lispsm"), std::string::npos) << error;  // the message lists the names
 }
 
+// The caster model's keys: faces by name, name lists (never numbers, even "1,2"), and the older
+// bias.backFaces still loading: true is back-face rendering, false leaves the default.
+TEST(Settings, CasterKeysAndOldBackFacesViewFilesLoad) {
+    Settings s;
+    std::string error;
+    EXPECT_EQ(s.casters.singleSided, CasterFaces::Auto);
+    ASSERT_TRUE(setByKey(s, "casters.singleSided=front", error)) << error;
+    EXPECT_EQ(s.casters.singleSided, CasterFaces::Front);
+    EXPECT_FALSE(setByKey(s, "casters.doubleSided=inside", error));
+    EXPECT_NE(error.find("front, back, both, auto"), std::string::npos) << error;
+    ASSERT_TRUE(setByKey(s, "casters.exclude=Sky*,1,2", error)) << error;
+    EXPECT_EQ(s.casters.exclude, (std::vector<std::string>{"Sky*", "1", "2"}));
+    ASSERT_TRUE(setByKey(s, "casters.include=7", error)) << error;
+    EXPECT_EQ(s.casters.include, (std::vector<std::string>{"7"}));
+    Settings back;
+    ASSERT_TRUE(fromJsonText(toJsonText(s), back, error)) << error;
+    EXPECT_EQ(back, s);
+    EXPECT_FALSE(fromJsonText(R"({"casters": {"exclude": [1]}})", back, error));
+    EXPECT_FALSE(fromJsonText(R"({"casters": {"exclude": ")" + std::string(300, 'x') + R"("}})", back, error));
+
+    Settings old;
+    ASSERT_TRUE(fromJsonText(R"({"bias": {"backFaces": true, "slopeFactor": 3.0}})", old, error)) << error;
+    EXPECT_EQ(old.casters.singleSided, CasterFaces::Back);
+    EXPECT_EQ(old.bias.slopeFactor, 3.0);
+    ASSERT_TRUE(fromJsonText(R"({"bias": {"backFaces": false}})", old, error)) << error;
+    EXPECT_EQ(old.casters.singleSided, CasterFaces::Auto);
+    ASSERT_TRUE(setByKey(old, "bias.backFaces=on", error)) << error;
+    EXPECT_EQ(old.casters.singleSided, CasterFaces::Back);
+    EXPECT_FALSE(fromJsonText(R"({"bias": {"backFaces": "yes"}})", old, error));
+    EXPECT_NE(error.find("bias.backFaces"), std::string::npos) << error;
+    // A file naming both keeps the new key's choice.
+    ASSERT_TRUE(fromJsonText(R"({"bias": {"backFaces": true}, "casters": {"singleSided": "both"}})", old, error));
+    EXPECT_EQ(old.casters.singleSided, CasterFaces::Both);
+    EXPECT_EQ(toJsonText(old).find("backFaces"), std::string::npos);  // written only as casters.*
+}
+
 TEST(Settings, SanitizeClampsCascadesAndDropsBadManualSplits) {
     Settings s;
     s.csm.splits = 9;

@@ -23,7 +23,7 @@ TEST(PngText, SettingsRoundTripThroughAScreenshotFile) {
     Settings settings;
     settings.method = ShadowMethod::Psm;
     settings.camera.yawDeg = 12.5;
-    settings.bias.backFaces = true;
+    settings.casters.singleSided = CasterFaces::Back;
     ASSERT_TRUE(addPngTextToFile(file, kSettingsPngKeyword, toJsonText(settings), error)) << error;
 
     // Still a valid PNG with the same pixels...

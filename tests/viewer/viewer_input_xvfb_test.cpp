@@ -150,7 +150,7 @@ TEST(ViewerInputUnderXvfb, F12SavesTheRenderedImageWithItsSettingsAndRenderRepro
     Settings embedded;
     ASSERT_TRUE(fromJsonText(*json, embedded, error)) << error;
     EXPECT_EQ(embedded.method, ShadowMethod::Psm);
-    EXPECT_TRUE(embedded.bias.backFaces);
+    EXPECT_EQ(embedded.casters.singleSided, CasterFaces::Back);  // bias.backFaces, migrated
 
     // `render --view shot.png` at the same size reproduces the picture.
     const fs::path again = dir / "f12-again.png", log = dir / "f12-render.log";

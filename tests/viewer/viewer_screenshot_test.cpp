@@ -241,7 +241,7 @@ TEST(ViewerUnderXvfb, SavedViewIsWhatRenderTakesAndReproducesTheFrame) {
     // Exactly toJsonText of the viewer's settings, with the values of the --view file applied.
     EXPECT_EQ(text, toJsonText(settings));
     EXPECT_EQ(settings.method, ShadowMethod::Psm);
-    EXPECT_TRUE(settings.bias.backFaces);
+    EXPECT_EQ(settings.casters.singleSided, CasterFaces::Back);  // bias.backFaces, migrated
     EXPECT_FALSE(settings.animation.playing);
 
     const fs::path headless = workDir() / "headless.png";
