@@ -61,10 +61,6 @@ std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& view, cons
                                                    const ConvexBody& visibleLit,
                                                    const std::vector<glm::dvec3>& visibleLitVertices, double depthNear,
                                                    double depthFar);
-// The measured receivers where there are any, else the stand-ins.
-std::vector<ReceiverSample> receiverSamples(const ViewFrustum& view, const ShadowLight& light,
-                                            const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
-                                            double depthNear, double depthFar, const std::vector<SurfacePoint>& measured);
 // The largest texel footprint of a map over the samples (map and image of size 1: only ratios
 // between maps of the same view mean something).
 double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,
