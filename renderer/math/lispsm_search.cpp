@@ -12,8 +12,7 @@ namespace {
 constexpr int kGridSteps = 4, kRefineSteps = 6;
 constexpr double kActiveShare = 0.7;
 constexpr double kHintTolerance = 1.10;
-constexpr double kMaxWarpRatio = 1e5;
-constexpr double kStandInGain = 1.25;  // f/n beyond this spends the map on a sliver at the eye
+constexpr double kMaxWarpRatio = 1e5;  // f/n beyond this spends the map on a sliver at the eye
 
 // One sample's data, projected onto its receiver's tangent plane (t1, t2) once, so that each
 // candidate warp costs a few multiplications per sample.
@@ -299,11 +298,10 @@ WarpSearchResult searchWarp(const WarpSearchInput& in, double warpHint) {
             bestU = uHint;
         }
     }
-    // Stand-ins only bound where receivers can be, not where they are: a warp they judge a small
-    // gain is as likely a loss on the image, so without measured receivers a warp must promise
-    // kStandInGain over SSM on them. Sweep, seed 1, 1000 sun + 500 spot views without receivers:
-    // walk-through spot views > 1.05x SSM 13 -> 3, hard views' spot 22 -> 9 (> 1.5x 4 -> 2),
-    // the sun's geometric-mean gain 2.34x -> 2.30x (with 1.67x instead: spot 2, sun 2.15x).
+    // Without measured receivers a warp must promise kStandInGain over SSM on the stand-ins.
+    // Sweep, seed 1, 1000 sun + 500 spot views without receivers: walk-through spot views
+    // > 1.05x SSM 13 -> 3, hard views' spot 22 -> 9 (> 1.5x 4 -> 2), the sun's geometric-mean
+    // gain 2.34x -> 2.30x (with 1.67x instead: spot 2, sun 2.15x).
     if (standIns && best * kStandInGain > r.uniformFootprint) {
         best = r.uniformFootprint;
         bestU = 0.0;
