@@ -1,11 +1,12 @@
 #pragma once
-// The method-comparison sweep: random walk-through views over a ground plane, each lit by
-// a sun or by a spot light above the ground aiming into the view, and for every method the same
-// error figure: the 99th percentile over the visible ground points inside the map of the texel
-// footprint m (math/texel_footprint.h, receiver normal = the ground's). PSM and LiSPSM are compared
-// with the focused SSM on the same view. The depth range a renderer's depth pre-pass would
-// measure (nearest / farthest visible ground point) is handed to PSM (auto near plane) and LiSPSM
-// (pseudo near, virtual far), as the renderer does. Lives in the library so gtest and
+// The method-comparison sweep: random walk-through views over a ground plane (or views of the
+// hard classes, SweepViewClass: uneven ground, box blocks), each lit by a sun or by a spot light
+// aiming into the view, and for every method the same error figure: the 99th percentile over the
+// visible lit-facing receiver points inside the map of the texel footprint m
+// (math/texel_footprint.h, with each point's own normal). PSM and LiSPSM are compared with the
+// focused SSM on the same view. The depth range a renderer's depth pre-pass would measure
+// (nearest / farthest visible point) is handed to PSM (auto near plane) and LiSPSM (pseudo near,
+// virtual far), as the renderer does. Lives in the library so gtest and
 // `shadowlab stress --sweep` share it.
 #include "math/shadow_setup.h"
 
