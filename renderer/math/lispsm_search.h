@@ -44,6 +44,10 @@ struct ReceiverSample {
 // Fewer measured receivers than this in the light and a spot light's finer grid is consulted
 // (receiversInLight), and PSM's guard also checks the stand-ins (shadow_setup.cpp).
 constexpr std::size_t kEnoughMeasuredReceivers = 16;
+// Without measured receivers a warp (LiSPSM's, or PSM by its guard) is taken only where the
+// stand-ins promise this gain over SSM's largest footprint: they bound where receivers can be, not
+// where they are, and a smaller promised gain was about as often a loss on the image (sweep).
+constexpr double kStandInGain = 1.25;
 // At most this many receivers go into the search (its cost is linear in them).
 constexpr std::size_t kMaxMeasuredReceivers = 48;
 // The measured receivers the warp search and PSM's guard use: the coarse grid, joined for a spot
@@ -61,10 +65,6 @@ std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& view, cons
                                                    const ConvexBody& visibleLit,
                                                    const std::vector<glm::dvec3>& visibleLitVertices, double depthNear,
                                                    double depthFar);
-// The measured receivers where there are any, else the stand-ins.
-std::vector<ReceiverSample> receiverSamples(const ViewFrustum& view, const ShadowLight& light,
-                                            const ConvexBody& visibleLit, const std::vector<glm::dvec3>& visibleLitVertices,
-                                            double depthNear, double depthFar, const std::vector<SurfacePoint>& measured);
 // The largest texel footprint of a map over the samples (map and image of size 1: only ratios
 // between maps of the same view mean something).
 double worstFootprintOf(const glm::dmat4& worldToShadowClip, const ViewFrustum& view,

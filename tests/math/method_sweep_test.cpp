@@ -18,15 +18,24 @@ const SweepMethodFigures& figuresOf(const std::vector<SweepMethodFigures>& list,
     throw std::runtime_error("method missing from the sweep");
 }
 
-TEST(MethodSweep, LispsmNeverLosesToSsmByHalf) {
+// A sweep of `sun` + `spot` views (printed).
+SweepReport sweep(std::uint64_t sun, std::uint64_t spot, std::uint64_t seed, bool measuredReceivers = true,
+                  bool hardViewClasses = false) {
     SweepOptions o;
-    o.directionalViews = 300;
-    o.spotViews = 150;
-    o.seed = 3;
-    const SweepReport r = runMethodSweep(o);
+    o.directionalViews = sun;
+    o.spotViews = spot;
+    o.seed = seed;
+    o.measuredReceivers = measuredReceivers;
+    o.hardViewClasses = hardViewClasses;
+    SweepReport r = runMethodSweep(o);
     std::cout << r.text();
-    EXPECT_EQ(r.directionalViews, o.directionalViews);
-    EXPECT_EQ(r.spotViews, o.spotViews);
+    return r;
+}
+
+TEST(MethodSweep, LispsmNeverLosesToSsmByHalf) {
+    const SweepReport r = sweep(300, 150, 3);
+    EXPECT_EQ(r.directionalViews, 300u);
+    EXPECT_EQ(r.spotViews, 150u);
     const auto& sun = figuresOf(r.directional, ShadowMethod::Lispsm);
     const auto& spot = figuresOf(r.spot, ShadowMethod::Lispsm);
     EXPECT_EQ(sun.worse50, 0u) << sun.worstCase;
@@ -44,16 +53,20 @@ TEST(MethodSweep, LispsmNeverLosesToSsmByHalf) {
 // Without the pre-pass's receiver points the warps measure at stand-ins (the visible lit body's
 // vertices): still never worse than SSM by half on the sun views.
 TEST(MethodSweep, WithoutMeasuredReceiversSunLispsmStillNeverLosesByHalf) {
-    SweepOptions o;
-    o.directionalViews = 300;
-    o.spotViews = 0;
-    o.seed = 5;
-    o.measuredReceivers = false;
-    const SweepReport r = runMethodSweep(o);
-    std::cout << r.text();
+    const SweepReport r = sweep(300, 0, 5, false);
     const auto& sun = figuresOf(r.directional, ShadowMethod::Lispsm);
     EXPECT_EQ(sun.worse50, 0u) << sun.worstCase;
     EXPECT_LE(sun.worse5, sun.views / 50) << "more than 2% of the sun views > 1.05x SSM";
+}
+
+// Without the pre-pass a spot's stand-ins (L n V n S: mostly air in the cone) misjudge small
+// gains: a warp must promise a clear one on them (13 of these 500 views were above 1.05x SSM's
+// p99 when any gain was taken, 3 with the margin).
+TEST(MethodSweep, WithoutMeasuredReceiversSpotLispsmRarelyLoses) {
+    const SweepReport r = sweep(0, 500, 1, false);
+    const auto& spot = figuresOf(r.spot, ShadowMethod::Lispsm);
+    EXPECT_EQ(spot.worse50, 0u) << spot.worstCase;
+    EXPECT_LE(spot.worse5, spot.views / 100) << "more than 1% of the spot views > 1.05x SSM";
 }
 
 // Hand-computed: a map fitted to [-1, 1]^2 on the ground seen straight down by an orthographic

@@ -116,9 +116,17 @@ TEST(Lispsm, SpotLightUsesTheGeneralFormula) {
     EXPECT_LT(s.diagnostics.z1, s.diagnostics.z0);
     EXPECT_NEAR(s.diagnostics.nOptReal, lispsmNOptGeneral(s.diagnostics.d, s.diagnostics.z0, s.diagnostics.z1),
                 1e-9 * s.diagnostics.nOptReal);
-    EXPECT_TRUE(std::isfinite(s.diagnostics.nUsed));
     EXPECT_FALSE(s.diagnostics.lightL.empty());
     expectBInClipCube(s, intersectionBody(v, l, terrain()));
+    // With the visible ground measured (the pre-pass's receivers) the warp applies (without them
+    // the stand-ins must promise a clear gain first, which here they do not).
+    ShadowParams p;
+    p.method = ShadowMethod::Lispsm;
+    for (double z = 45.0; z >= -20.0; z -= 5.0)
+        for (double x = -20.0; x <= 20.0; x += 5.0) p.receiverPoints.push_back({{x, 0.0, z}, {0, 1, 0}});
+    const ShadowSetup measured = computeShadowSetup(v, l, terrain(), p);
+    EXPECT_TRUE(std::isfinite(measured.diagnostics.nUsed));
+    EXPECT_GT(measured.diagnostics.estimatedGainOverSsm, 1.0);
 }
 
 TEST(Lispsm, BodyVectorOption) {
