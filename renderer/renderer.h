@@ -43,7 +43,8 @@ public:
     // Uploads deferred textures for about `budgetMs` (at least one); a scene change for the map
     // reuse (masked textures shape the shadow map). The number still to come.
     std::size_t streamTextures(double budgetMs);
-    // After node transforms changed (animation): new instance matrices.
+    // After node transforms changed (animation): new instance matrices and deformed vertices of
+    // the instances that moved; shadow maps stay valid unless one of their casters moved.
     void updateInstances(const Scene& scene);
 
     // Draws one view of `scene` with `settings` into `viewport`. `seconds` drives the animated sun.
@@ -135,7 +136,11 @@ private:
     InstanceCuller culler_;
     const Scene* scene_ = nullptr;    // the scene uploaded last
     std::uint64_t sceneLoads_ = 0;    // bumped by setScene
-    std::uint64_t sceneVersion_ = 0;  // bumped by setScene and updateInstances
+    std::uint64_t sceneVersion_ = 0;  // bumped by setScene, streamed textures and instances that moved
+    std::uint64_t contentVersion_ = 0;  // sceneVersion_ of the last geometry or texture upload
+    std::vector<std::uint64_t> instanceMoved_;     // per instance: sceneVersion_ when it last moved
+    std::vector<std::uint32_t> changedInstances_;  // scratch of updateInstances
+    std::uint64_t castersMoved(const InstanceList& casters) const;  // latest instanceMoved_ among them
     // The map of the last shadowed frame, out of one per compared view (selectShadowMap).
     ShadowMap& shadowMap() { return shadowMaps_[currentMap_]; }
     const ShadowMap& shadowMap() const { return shadowMaps_[currentMap_]; }
