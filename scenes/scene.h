@@ -46,7 +46,7 @@ struct Primitive {
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;
-    std::vector<float> weights;  // default morph target weights (one per target), may be empty
+    std::vector<float> weights{};  // default morph target weights (one per target), may be empty
     bool morphed() const;        // a primitive has morph targets
     bool skinned() const;        // a primitive has JOINTS_0 / WEIGHTS_0
 };

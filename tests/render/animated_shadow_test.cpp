@@ -6,6 +6,7 @@
 #include "groundtruth/ray_scene.h"
 #include "groundtruth/shadow_truth.h"
 #include "render_helpers.h"
+#include "resources/gpu_scene.h"
 #include "scenes/animation.h"
 #include "scenes/gltf_loader.h"
 #include "scenes/skinning.h"
@@ -149,6 +150,51 @@ TEST_F(AnimatedShadow, TheShadowMapIsRedrawnOnlyWhenACasterMoves) {
     poseAt(0.9);
     render(scene, settings, &stats);
     EXPECT_FALSE(stats.shadowMapReused) << "the skinned fox moved";
+}
+
+// deform.comp against the CPU's deformPrimitive (what the truth traces): the posed vertices read
+// back from the vertex buffer, for a skin (Fox, CesiumMan) and morph targets (AnimatedMorphCube),
+// at the loaded pose and after a pose change (only the changed instances are dispatched again).
+TEST_F(AnimatedShadow, TheGpuDeformsAsTheCpuDoes) {
+    for (const char* file : {"Fox/glTF-Binary/Fox.glb", "CesiumMan/glTF-Binary/CesiumMan.glb",
+                             "AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb"}) {
+        SCOPED_TRACE(file);
+        const fs::path path = fs::path(SHADOWLAB_SHARED_SCENES) / file;
+        if (!fs::exists(path)) GTEST_SKIP() << "shared scenes missing";
+        LoadResult r = loadScene(path);
+        ASSERT_TRUE(r.ok()) << r.error;
+        Scene& s = *r.scene;
+        animateScene(s, 0.3);
+        GpuScene gpu(s);
+        for (double t : {0.3, 0.8}) {
+            animateScene(s, t);
+            std::vector<std::uint32_t> changed;
+            gpu.updateInstances(s, &changed);
+            EXPECT_EQ(changed.empty(), t == 0.3) << "t = " << t;
+            const double tolerance = 2e-5 * glm::length(s.bounds.extent());
+            std::size_t compared = 0;
+            for (const MeshInstance& instance : s.instances) {
+                if (!isDeformed(s, instance)) continue;
+                const Pose pose = instancePose(s, instance);
+                const auto& primitives = s.meshes[std::size_t(instance.mesh)].primitives;
+                for (std::size_t k = 0; k < primitives.size(); ++k) {
+                    std::vector<glm::vec3> positions, normals;
+                    deformPrimitive(primitives[k], pose, positions, &normals);
+                    std::vector<float> gpuVertices(positions.size() * 8);
+                    const GLint base = gpu.meshes()[std::size_t(instance.mesh)].primitives[k].baseVertex;
+                    glGetNamedBufferSubData(gpu.vertexBuffer(), GLintptr(base) * 32, GLsizeiptr(gpuVertices.size() * 4),
+                                            gpuVertices.data());
+                    for (std::size_t v = 0; v < positions.size(); ++v, ++compared) {
+                        const glm::vec3 p(gpuVertices[8 * v], gpuVertices[8 * v + 1], gpuVertices[8 * v + 2]);
+                        const glm::vec3 n(gpuVertices[8 * v + 3], gpuVertices[8 * v + 4], gpuVertices[8 * v + 5]);
+                        ASSERT_LT(glm::length(glm::dvec3(p - positions[v])), tolerance) << "vertex " << v;
+                        ASSERT_GT(glm::dot(n, normals[v]), 0.999f) << "normal of vertex " << v;
+                    }
+                }
+            }
+            EXPECT_GT(compared, 0u);
+        }
+    }
 }
 
 }  // namespace
