@@ -88,19 +88,32 @@ void Renderer::setScene(const Scene& scene, bool streamTextures) {
     backdrops_ = detectBackdrops(scene);
     ++sceneLoads_;
     ++sceneVersion_;
+    contentVersion_ = sceneVersion_;
+    instanceMoved_.assign(scene.instances.size(), 0);
 }
 
 std::size_t Renderer::streamTextures(double budgetMs) {
     if (!gpuScene_ || !scene_) return 0;
-    if (gpuScene_->uploadPendingTextures(*scene_, budgetMs)) ++sceneVersion_;
+    if (gpuScene_->uploadPendingTextures(*scene_, budgetMs)) contentVersion_ = ++sceneVersion_;
     return gpuScene_->pendingTextures();
 }
 
 void Renderer::updateInstances(const Scene& scene) {
     if (!gpuScene_) return;
-    gpuScene_->updateInstances(scene);
+    gpuScene_->updateInstances(scene, &changedInstances_);
+    if (changedInstances_.empty()) return;  // a pose that moved nothing redraws nothing
     culler_.updateInstances(scene);
     ++sceneVersion_;
+    // Per instance, when it last moved: a shadow map is redrawn only when one of its casters did.
+    instanceMoved_.resize(scene.instances.size(), 0);
+    for (std::uint32_t i : changedInstances_) instanceMoved_[i] = sceneVersion_;
+}
+
+std::uint64_t Renderer::castersMoved(const InstanceList& casters) const {
+    std::uint64_t latest = 0;
+    for (std::uint32_t i : casters)
+        if (i < instanceMoved_.size()) latest = std::max(latest, instanceMoved_[i]);
+    return latest;
 }
 
 void Renderer::resolveTimings() {
@@ -157,7 +170,8 @@ ShadowMapKey Renderer::shadowMapKey(const Frame& frame) const {
     const bool slope = bias.mode == DepthOffset::SlopeScale;
     ShadowMapKey key;
     key.scene = &frame.scene;
-    key.sceneVersion = sceneVersion_;
+    key.sceneVersion = contentVersion_;
+    key.castersMoved = castersMoved(frame.casters);
     key.size = frame.settings.shadowMapSize;
     key.worldToShadowClip = frame.worldToShadowClip;
     key.reversedDepth = frame.reversedDepth;

@@ -44,7 +44,8 @@ public:
     // Uploads deferred textures for about `budgetMs` (at least one); a scene change for the map
     // reuse (masked textures shape the shadow map). The number still to come.
     std::size_t streamTextures(double budgetMs);
-    // After node transforms changed (animation): new instance matrices.
+    // After node transforms changed (animation): new instance matrices and deformed vertices of
+    // the instances that moved; shadow maps stay valid unless one of their casters moved.
     void updateInstances(const Scene& scene);
 
     // Draws one view of `scene` with `settings` into `viewport`. `seconds` drives the animated sun.
@@ -147,7 +148,11 @@ private:
     std::vector<std::size_t> backdrops_;  // detectBackdrops of the scene uploaded last
     CasterChoice casterChoice_;           // the last frame's (lastCasterChoice)
     std::uint64_t sceneLoads_ = 0;    // bumped by setScene
-    std::uint64_t sceneVersion_ = 0;  // bumped by setScene and updateInstances
+    std::uint64_t sceneVersion_ = 0;  // bumped by setScene, streamed textures and instances that moved
+    std::uint64_t contentVersion_ = 0;  // sceneVersion_ of the last geometry or texture upload
+    std::vector<std::uint64_t> instanceMoved_;     // per instance: sceneVersion_ when it last moved
+    std::vector<std::uint32_t> changedInstances_;  // scratch of updateInstances
+    std::uint64_t castersMoved(const InstanceList& casters) const;  // latest instanceMoved_ among them
     // The map of the last shadowed frame, out of one per compared view (selectShadowMap).
     ShadowMap& shadowMap() { return shadowMaps_[currentMap_]; }
     const ShadowMap& shadowMap() const { return shadowMaps_[currentMap_]; }

@@ -44,6 +44,43 @@ glm::vec4 finish(const AnimationChannel& c, glm::vec4 v) {
 
 }  // namespace
 
+namespace {
+
+// Where `t` falls among the keys: the key pair [k0, k1] and the fraction s between them (k0 == k1
+// before the first key and after the last one: the spec's clamping).
+struct KeySpan {
+    std::size_t k0 = 0, k1 = 0;
+    float s = 0.0f;
+    double dt = 0.0;
+};
+KeySpan findKeys(const std::vector<float>& times, double t) {
+    KeySpan span;
+    const std::size_t keys = times.size();
+    if (keys == 1 || t <= double(times.front())) return span;
+    if (t >= double(times.back())) {
+        span.k0 = span.k1 = keys - 1;
+        return span;
+    }
+    // The interval [times[k], times[k+1]) holding t (times are increasing: the loader checks it).
+    const auto upper = std::upper_bound(times.begin(), times.end(), float(t));
+    span.k1 = std::size_t(upper - times.begin());
+    span.k0 = span.k1 - 1;
+    span.dt = double(times[span.k1]) - double(times[span.k0]);
+    span.s = span.dt > 0.0 ? float(std::clamp((t - times[span.k0]) / span.dt, 0.0, 1.0)) : 0.0f;
+    return span;
+}
+
+// glTF 2.0 appendix C: p(s) = (2s^3 - 3s^2 + 1) v0 + (s^3 - 2s^2 + s) dt b0
+//                             + (-2s^3 + 3s^2) v1 + (s^3 - s^2) dt a1,
+// b0 = out-tangent of key k0, a1 = in-tangent of key k1, tangents per second.
+template <class T>
+T hermite(const T& v0, const T& b0, const T& a1, const T& v1, float s, double dt) {
+    const float s2 = s * s, s3 = s2 * s, fdt = float(dt);
+    return (2 * s3 - 3 * s2 + 1) * v0 + (s3 - 2 * s2 + s) * fdt * b0 + (-2 * s3 + 3 * s2) * v1 + (s3 - s2) * fdt * a1;
+}
+
+}  // namespace
+
 ChannelSample sampleChannel(const AnimationChannel& c, double t) {
     ChannelSample out;
     const std::size_t keys = c.times.size();
@@ -52,44 +89,41 @@ ChannelSample sampleChannel(const AnimationChannel& c, double t) {
     // The key value (the middle of the in-tangent, value, out-tangent triple for cubic splines).
     auto value = [&](std::size_t k) { return c.values[k * perKey + (perKey == 3 ? 1 : 0)]; };
     out.valid = true;
-    if (keys == 1 || t <= double(c.times.front())) {
-        out.value = finish(c, value(0));
+    const KeySpan span = findKeys(c.times, t);
+    if (span.k0 == span.k1 || c.interpolation == Interpolation::Step) {
+        out.value = finish(c, value(span.k0));
         return out;
     }
-    if (t >= double(c.times.back())) {
-        out.value = finish(c, value(keys - 1));
-        return out;
-    }
-    // The interval [times[k], times[k+1]) holding t (times are increasing: the loader checks it).
-    const auto upper = std::upper_bound(c.times.begin(), c.times.end(), float(t));
-    const std::size_t k1 = std::size_t(upper - c.times.begin());
-    const std::size_t k0 = k1 - 1;
-    const double t0 = c.times[k0], t1 = c.times[k1];
-    const double dt = t1 - t0;
-    const float s = dt > 0.0 ? float(std::clamp((t - t0) / dt, 0.0, 1.0)) : 0.0f;
-
-    switch (c.interpolation) {
-        case Interpolation::Step:
-            out.value = finish(c, value(k0));
-            break;
-        case Interpolation::Linear:
-            out.value = isRotation(c) ? fromQuat(slerpShortest(toQuat(value(k0)), toQuat(value(k1)), s))
-                                      : glm::mix(value(k0), value(k1), s);
-            break;
-        case Interpolation::CubicSpline: {
-            // glTF 2.0 appendix C: p(s) = (2s^3 - 3s^2 + 1) v0 + (s^3 - 2s^2 + s) dt b0
-            //                             + (-2s^3 + 3s^2) v1 + (s^3 - s^2) dt a1,
-            // b0 = out-tangent of key k0, a1 = in-tangent of key k1, tangents per second.
-            const glm::vec4 v0 = c.values[k0 * 3 + 1], b0 = c.values[k0 * 3 + 2];
-            const glm::vec4 a1 = c.values[k1 * 3 + 0], v1 = c.values[k1 * 3 + 1];
-            const float s2 = s * s, s3 = s2 * s, fdt = float(dt);
-            const glm::vec4 p = (2 * s3 - 3 * s2 + 1) * v0 + (s3 - 2 * s2 + s) * fdt * b0 + (-2 * s3 + 3 * s2) * v1 +
-                                (s3 - s2) * fdt * a1;
-            out.value = finish(c, p);  // rotations: the spline result is re-normalised (spec)
-            break;
-        }
+    const std::size_t k0 = span.k0, k1 = span.k1;
+    if (c.interpolation == Interpolation::Linear) {
+        out.value = isRotation(c) ? fromQuat(slerpShortest(toQuat(value(k0)), toQuat(value(k1)), span.s))
+                                  : glm::mix(value(k0), value(k1), span.s);
+    } else {
+        // Rotations: the spline result is re-normalised (spec).
+        out.value = finish(c, hermite(c.values[k0 * 3 + 1], c.values[k0 * 3 + 2], c.values[k1 * 3 + 0],
+                                      c.values[k1 * 3 + 1], span.s, span.dt));
     }
     return out;
+}
+
+bool sampleWeights(const AnimationChannel& c, double t, std::vector<float>& weights) {
+    const std::size_t keys = c.times.size(), n = std::size_t(std::max(c.targets, 0));
+    const std::size_t perKey = c.interpolation == Interpolation::CubicSpline ? 3 : 1;
+    if (keys == 0 || n == 0 || c.weights.size() < keys * perKey * n || !std::isfinite(t)) return false;
+    // Element `i` of value `v` (the middle of the cubic triple, as for the other paths).
+    auto at = [&](std::size_t key, std::size_t slot, std::size_t i) { return c.weights[(key * perKey + slot) * n + i]; };
+    const std::size_t mid = perKey == 3 ? 1 : 0;
+    const KeySpan span = findKeys(c.times, t);
+    weights.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (span.k0 == span.k1 || c.interpolation == Interpolation::Step)
+            weights[i] = at(span.k0, mid, i);
+        else if (c.interpolation == Interpolation::Linear)
+            weights[i] = at(span.k0, 0, i) + (at(span.k1, 0, i) - at(span.k0, 0, i)) * span.s;
+        else
+            weights[i] = hermite(at(span.k0, 1, i), at(span.k0, 2, i), at(span.k1, 0, i), at(span.k1, 1, i), span.s, span.dt);
+    }
+    return true;
 }
 
 double animationDuration(const Animation& animation) {
@@ -113,6 +147,7 @@ double loopTime(double t, double duration) {
 
 int applyAnimations(Scene& scene, double t) {
     int applied = 0;
+    std::vector<float> scratch;
     for (const Animation& animation : scene.animations) {
         const double duration = animationDuration(animation);
         // The end of the loop shows the last key rather than jumping back to the first one.
@@ -121,6 +156,14 @@ int applyAnimations(Scene& scene, double t) {
         for (const AnimationChannel& c : animation.channels) {
             if (c.node < 0 || c.node >= int(scene.nodes.size())) continue;
             Node& node = scene.nodes[std::size_t(c.node)];
+            if (c.path == AnimationPath::Weights) {
+                // Morph weights are not part of the transform: a node given by a matrix may have them.
+                if (!node.weights.empty() && sampleWeights(c, local, scratch)) {
+                    std::copy_n(scratch.begin(), std::min(scratch.size(), node.weights.size()), node.weights.begin());
+                    ++applied;
+                }
+                continue;
+            }
             if (node.hasMatrix) continue;
             const ChannelSample sample = sampleChannel(c, local);
             if (!sample.valid) continue;
@@ -133,6 +176,8 @@ int applyAnimations(Scene& scene, double t) {
                     break;
                 case AnimationPath::Scale:
                     node.scale = glm::vec3(sample.value);
+                    break;
+                case AnimationPath::Weights:
                     break;
             }
             ++applied;

@@ -1,11 +1,13 @@
 #pragma once
 // glTF animation sampling (glTF 2.0 spec, "Animations"; the papers' dynamic scenes): channels
-// animate a node's translation, rotation or scale with LINEAR (quaternion slerp for rotations),
+// animate a node's translation, rotation, scale or morph weights with LINEAR (quaternion slerp for rotations),
 // STEP or CUBICSPLINE (Hermite with in/out tangents) interpolation. GL-free: the sampler writes
 // Node TRS, updateWorldTransforms (loader) then refreshes world matrices, instances and bounds.
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
+
+#include <vector>
 
 namespace shadowlab {
 
@@ -18,6 +20,9 @@ struct ChannelSample {
     glm::vec4 value{0.0f};
 };
 ChannelSample sampleChannel(const AnimationChannel& channel, double t);
+// A "weights" channel (morph target weights, glTF 2.0 spec "Animations"): every target's weight at
+// `t`, interpolated per component (LINEAR is a plain lerp). False when the channel is unusable.
+bool sampleWeights(const AnimationChannel& channel, double t, std::vector<float>& weights);
 
 // Length of an animation: its last key time over all channels (Animation::duration when larger).
 double animationDuration(const Animation& animation);

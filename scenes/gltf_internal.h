@@ -7,6 +7,7 @@
 //   image_decode.cpp     stb_image compiled privately, every allocation bounded by the header
 //   gltf_meshes.cpp      materials, primitives, the geometry budget
 //   gltf_nodes.cpp       nodes, lights, cameras, the instance budget, animations
+//   gltf_deform.cpp      skins, JOINTS_0/WEIGHTS_0, morph targets, node morph weights
 //   gltf_loader.cpp      the steps in order, load limits
 #include "scenes/gltf_loader.h"
 
@@ -156,6 +157,15 @@ private:
     void addLight(int gltfLight, int node);
     void addCamera(int gltfCamera, int node);
     void convertAnimations();
+
+    // skins and morph targets (gltf_deform.cpp)
+    void convertSkins();
+    void readSkinAttributes(const tinygltf::Primitive& src, const std::string& where, Primitive& p);
+    void readMorphTargets(const tinygltf::Primitive& src, const std::string& where, Primitive& p) const;
+    // After meshes: node skins checked against their meshes' joints, node morph weights set, and a
+    // deformed mesh drawn by several nodes copied per node (each pose deforms its own vertices).
+    void finishDeformedNodes();
+    int morphTargetCount(int node) const;  // of the node's mesh, 0 without
 };
 
 bool finiteAll(const std::vector<double>& v);

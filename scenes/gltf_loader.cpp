@@ -19,14 +19,15 @@ Converter::Converter(const tinygltf::Model& model, const json& rootJson, const I
     : m(model), root(rootJson), images(capture), options(loadOptions), warnings(warningList), scene(target) {}
 
 void Converter::convert() {
-    if (!m.skins.empty()) warn(std::to_string(m.skins.size()) + " skin(s) ignored: meshes are drawn in their bind pose");
     convertNodes();
     reportProgress(options, kLoadProgress.nodes);
     checkGeometryBudget();
     checkInstanceBudget();
     convertMaterials();
     countAccessorUsers();
+    convertSkins();
     convertMeshes();
+    finishDeformedNodes();
     convertAnimations();
     decodeTextures();
 }

@@ -81,7 +81,8 @@ void addDefaultsIfMissing(Scene& scene);
 
 // Recomputes Node::world from the local TRS/matrix down from the roots, rebuilds the mesh
 // instances (world matrix, world bounds, mirroring) of the nodes reachable from the roots,
-// places the node lights and cameras, and recomputes Scene::bounds. Animation calls it per frame.
+// places the node lights and cameras, and recomputes Scene::bounds (skinned and morphed instances:
+// bounds that hold for the current pose, scenes/skinning.h). Animation calls it per frame.
 // A scene without roots treats every parentless node as a root.
 void updateWorldTransforms(Scene& scene);
 

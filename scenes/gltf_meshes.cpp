@@ -78,6 +78,8 @@ void Converter::checkGeometryBudget() {
             const std::uint64_t v = declared(position->second, 3, where + " POSITION");
             const std::uint64_t n = p.indices >= 0 ? declared(p.indices, 1, where + " indices") : v;
             vertices = saturatingAdd(vertices, v);
+            // Each morph target holds one displacement per vertex: as many vertices again.
+            for (std::size_t t = 0; t < p.targets.size(); ++t) vertices = saturatingAdd(vertices, v);
             indices = saturatingAdd(indices, listIndices(mode, n));
             meshTriangles[i] = saturatingAdd(meshTriangles[i], listIndices(mode, n) / 3);
         }
@@ -161,7 +163,6 @@ std::optional<Primitive> Converter::convertPrimitive(const tinygltf::Primitive& 
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
         mode != TINYGLTF_MODE_TRIANGLE_FAN)
         fail(where + ": unknown primitive mode " + std::to_string(mode));
-    if (!src.targets.empty()) warn(where + ": morph targets are ignored (the base shape is drawn)");
     if (src.material >= int(m.materials.size()))
         fail(where + ": material " + std::to_string(src.material) + " does not exist");
 
@@ -273,6 +274,8 @@ std::optional<Primitive> Converter::convertPrimitive(const tinygltf::Primitive& 
         }
     }
     p.material = src.material;
+    readSkinAttributes(src, where, p);
+    readMorphTargets(src, where, p);
     return p;
 }
 

@@ -236,7 +236,7 @@ void Converter::convertAnimations() {
             if (ch.target_node < 0) continue;  // targets something else (an extension): nothing to move
             if (std::size_t(ch.target_node) >= m.nodes.size())
                 fail(what + ": node " + std::to_string(ch.target_node) + " does not exist");
-            if (!m.nodes[std::size_t(ch.target_node)].matrix.empty())
+            if (!m.nodes[std::size_t(ch.target_node)].matrix.empty() && ch.target_path != "weights")
                 warn(what + ": targets node " + std::to_string(ch.target_node) +
                      ", which has a matrix (glTF forbids animating it; the channel has no effect)");
             AnimationChannel channel;
@@ -247,10 +247,19 @@ void Converter::convertAnimations() {
             else if (ch.target_path == "rotation") {
                 channel.path = AnimationPath::Rotation;
                 components = 4;
-            } else if (ch.target_path == "scale")
+            } else if (ch.target_path == "scale") {
                 channel.path = AnimationPath::Scale;
-            else {
-                warn(what + ": path " + quoted(ch.target_path) + " is not animated (only translation/rotation/scale)");
+            } else if (ch.target_path == "weights") {
+                channel.path = AnimationPath::Weights;
+                channel.targets = morphTargetCount(ch.target_node);
+                if (channel.targets == 0) {
+                    warn(what + ": animates the morph weights of node " + std::to_string(ch.target_node) +
+                         ", whose mesh has no morph targets (no effect)");
+                    continue;
+                }
+                components = 1;  // a scalar accessor of keys x targets values
+            } else {
+                warn(what + ": path " + quoted(ch.target_path) + " is not animated (only translation/rotation/scale/weights)");
                 continue;
             }
             if (ch.sampler < 0 || std::size_t(ch.sampler) >= src.samplers.size())
@@ -269,13 +278,20 @@ void Converter::convertAnimations() {
             const std::vector<double> values =
                 readAccessor(sampler.output, what + " output", components, false, valueCount);
             if (timeCount == 0) fail(what + ": no keyframes");
-            if (valueCount != timeCount * keys)
+            const std::size_t perValue = channel.path == AnimationPath::Weights ? std::size_t(channel.targets) : 1;
+            if (valueCount != timeCount * keys * perValue)
                 fail(what + ": " + std::to_string(valueCount) + " output values for " + std::to_string(timeCount) +
-                     " keyframes (expected " + std::to_string(timeCount * keys) + ")");
+                     " keyframes (expected " + std::to_string(timeCount * keys * perValue) + ")");
             if (!finiteAll(times) || !finiteAll(values)) fail(what + ": non-finite keyframe times or values");
             for (std::size_t t = 1; t < timeCount; ++t)
                 if (times[t] < times[t - 1]) fail(what + ": keyframe times are not increasing");
             channel.times.assign(times.begin(), times.end());
+            if (channel.path == AnimationPath::Weights) {
+                channel.weights.assign(values.begin(), values.end());
+                animation.duration = std::max(animation.duration, channel.times.back());
+                animation.channels.push_back(std::move(channel));
+                continue;
+            }
             channel.values.resize(valueCount);
             for (std::size_t v = 0; v < valueCount; ++v) {
                 glm::vec4 value(0.0f);

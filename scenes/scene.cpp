@@ -2,6 +2,7 @@
 // instances and bounds, and the default light and camera.
 #include "scenes/gltf_loader.h"
 #include "scenes/scene.h"
+#include "scenes/skinning.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -110,9 +111,12 @@ void updateWorldTransforms(Scene& scene) {
             instance.node = index;
             instance.mesh = node.mesh;
             instance.world = node.world;
-            instance.worldBounds = worldBoundsOf(scene.meshes[std::size_t(node.mesh)], node.world);
             instance.mirrored = glm::determinant(glm::dmat3(node.world)) < 0.0;
-            scene.bounds.extend(instance.worldBounds);
+            // A deformed mesh's bounds need every joint's world matrix: after the traversal.
+            if (!isDeformed(scene, instance)) {
+                instance.worldBounds = worldBoundsOf(scene.meshes[std::size_t(node.mesh)], node.world);
+                scene.bounds.extend(instance.worldBounds);
+            }
             scene.instances.push_back(std::move(instance));
         }
         if (node.light >= 0 && node.light < int(scene.lights.size())) {
@@ -128,6 +132,11 @@ void updateWorldTransforms(Scene& scene) {
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
             stack.emplace_back(*child, node.world);
     }
+    for (MeshInstance& instance : scene.instances)
+        if (isDeformed(scene, instance)) {
+            instance.worldBounds = deformedWorldBounds(scene, instance);
+            scene.bounds.extend(instance.worldBounds);
+        }
 }
 
 void addDefaultsIfMissing(Scene& scene) {

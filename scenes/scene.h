@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -12,6 +13,14 @@
 #include <vector>
 
 namespace shadowlab {
+
+// One morph target of a primitive (glTF 2.0 spec 3.7.2.2): displacements added to the base
+// attributes, weighted by the node's (or the mesh's default) weights.
+struct MorphTarget {
+    std::vector<glm::vec3> positions;  // POSITION displacement per vertex (zeros when the file has none)
+    std::vector<glm::vec3> normals;    // NORMAL displacement, empty when the file has none
+    Aabb positionBounds;               // of the displacements: weighted, they bound the morphed shape
+};
 
 // One triangle list (strips and fans are converted by the loader), de-indexed attributes
 // already decoded to float (sparse accessors applied, normalized integers scaled).
@@ -21,13 +30,34 @@ struct Primitive {
     std::vector<glm::vec2> texcoords;  // TEXCOORD_0, empty when the file has none
     std::vector<std::uint32_t> indices;  // triangle list, always indexed (non-indexed input gets 0..n-1)
     int material = -1;                   // index into Scene::materials; -1 = default material
-    Aabb bounds;                         // object space
+    Aabb bounds;                         // object space (the bind pose / base shape)
+    // Skinning (glTF 2.0 spec 3.7.3): JOINTS_0 (indices into the node's Skin::joints) and
+    // WEIGHTS_0 (normalised to sum 1 by the loader), both empty when the primitive is not skinned.
+    std::vector<glm::u16vec4> joints;
+    std::vector<glm::vec4> skinWeights;
+    // Per skin joint: bounds of the bind-pose positions the joint influences (weight > 0), empty
+    // boxes for joints without vertices. Transformed by the joint matrices they bound the pose.
+    std::vector<Aabb> jointBounds;
+    std::vector<MorphTarget> targets;
+    bool skinned() const { return !joints.empty(); }
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;
+    std::vector<float> weights{};  // default morph target weights (one per target), may be empty
+    bool morphed() const;        // a primitive has morph targets
+    bool skinned() const;        // a primitive has JOINTS_0 / WEIGHTS_0
+};
+
+// glTF 2.0 spec 3.7.3 "Skins": the joints (nodes) and the matrices that take the mesh from its
+// bind pose into each joint's space.
+struct Skin {
+    std::string name;
+    std::vector<int> joints;                      // node indices
+    std::vector<glm::dmat4> inverseBindMatrices;  // one per joint (identity when the file has none)
+    int skeleton = -1;                            // informative only: the joints' common root
 };
 
 // Values are the glTF / OpenGL enums (9728 NEAREST, 9729 LINEAR, 10497 REPEAT, ...).
@@ -103,6 +133,8 @@ struct Node {
     glm::dmat4 matrix{1.0};
     glm::dmat4 world{1.0};
     int mesh = -1;
+    int skin = -1;               // index into Scene::skins (with a skinned mesh)
+    std::vector<float> weights;  // morph weights: the node's, else the mesh's default (animated)
     int camera = -1;  // index into Scene::cameras
     int light = -1;   // index into Scene::lights
 };
@@ -116,7 +148,7 @@ struct MeshInstance {
     bool mirrored = false;  // det(world) < 0: winding flips (matters for culling in the shadow pass)
 };
 
-enum class AnimationPath { Translation, Rotation, Scale };
+enum class AnimationPath { Translation, Rotation, Scale, Weights };
 enum class Interpolation { Linear, Step, CubicSpline };
 
 struct AnimationChannel {
@@ -125,6 +157,9 @@ struct AnimationChannel {
     Interpolation interpolation = Interpolation::Linear;
     std::vector<float> times;
     std::vector<glm::vec4> values;  // vec3 in xyz for T/S, quaternion xyzw for R; 3 per key for cubic spline
+    // Path Weights: `targets` floats per value (values above stay empty), 3 values per key for cubic spline.
+    std::vector<float> weights;
+    int targets = 0;
 };
 
 struct Animation {
@@ -144,6 +179,7 @@ struct Scene {
     std::vector<Camera> cameras;
     std::vector<MeshInstance> instances;
     std::vector<Animation> animations;
+    std::vector<Skin> skins;
     Aabb bounds;  // world, over all instances
     bool defaultLight = false;   // no light in the file: a sun was added
     bool defaultCamera = false;  // no camera in the file: a framing camera was added

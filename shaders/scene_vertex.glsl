@@ -1,7 +1,8 @@
 // Vertex inputs shared by every pass that draws scene geometry: per-vertex attributes plus the
 // index of the instance (an instanced attribute advanced by baseInstance: a slot of the scene's
 // fixed instance order, or an entry of a pass's culled draw list), whose world and normal matrix
-// come from one storage buffer indexed by Scene::instances order.
+// come from one storage buffer indexed by Scene::instances order. Skinned and morphed meshes arrive
+// here already posed (deform.comp writes their vertices once per pose change), in their node's space.
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inTexcoord;

@@ -8,6 +8,7 @@
 #include "gl/debug_output.h"
 #include "gl/headless_context.h"
 #include "resources/render_target.h"
+#include "scenes/animation.h"
 #include "view_setup.h"
 
 #include <CLI/CLI.hpp>
@@ -117,6 +118,18 @@ void runCanonical(Renderer& renderer, BenchResults& results) {
     }
 }
 
+// glTF animations posed at a case's animation.time (`--set animation.time=T` in a variant), the
+// renderer's instances and the truth's geometry with them.
+void poseAt(Scene& scene, double time, Renderer& renderer, std::unique_ptr<RayScene>& rays, double& posedTime) {
+    if (time == posedTime || !animateScene(scene, time)) return;
+    posedTime = time;
+    renderer.updateInstances(scene);
+    if (!rays) return;
+    std::string error;
+    rays = RayScene::build(scene, error);
+    if (!rays) fail(error);
+}
+
 void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry, const Progress& progress,
               std::size_t& done, BenchResults& results) {
     const auto loadStart = Clock::now();
@@ -132,6 +145,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
         info.bvhSeconds = rays->buildSeconds();
     }
     results.scenes.push_back(info);
+    double posedTime = -1.0;  // the loaded (rest) pose
     const std::vector<BenchCamera> cameras = entry.cameras.empty() ? std::vector<BenchCamera>{{"first", 0, false}}
                                                                      : entry.cameras;
     RenderTarget target(spec.width, spec.height);
@@ -162,6 +176,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                         c.layerSize = settings.shadowMapSize;
                         c.layers = settings.csm.enabled ? settings.csm.splits : 1;
                         c.mapTexels = shadowMapTexels(settings);
+                        poseAt(*scene, settings.animation.time, renderer, rays, posedTime);
                         timeCase(renderer, *scene, settings, target, spec.warmup, spec.repeats, c);
                         const MeasureFrame frame = measureView(renderer, *scene, settings, spec.width, spec.height);
                         c.accuracy = analyseFrame(frame, rays.get(), truthLight(*scene, settings, settings.animation.time));

@@ -123,9 +123,11 @@ void measureForPanel(ViewerAccuracy& a, Renderer& renderer, const Scene& scene, 
     const double scale = std::min({1.0, 1280.0 / std::max(1, width), 720.0 / std::max(1, height)});
     const int w = std::max(16, int(width * scale)), h = std::max(16, int(height * scale));
     std::string error;
-    if (a.toggles.groundTruth && (a.raysScene != &scene || !a.rays)) {
+    const bool posed = scene.animations.empty() || a.raysTime == settings.animation.time;
+    if (a.toggles.groundTruth && (a.raysScene != &scene || !a.rays || !posed)) {
         a.rays = RayScene::build(scene, error);
         a.raysScene = a.rays ? &scene : nullptr;
+        a.raysTime = settings.animation.time;
     }
     const RayScene* rays = a.toggles.groundTruth ? a.rays.get() : nullptr;
     a.measuredSettings = settings;

@@ -16,6 +16,7 @@ struct ViewerAccuracy {
     bool requested = false;
     Settings measuredSettings;  // the mismatch view shows only while the view is still this one
     const Scene* raysScene = nullptr;  // the scene `rays` was built for
+    double raysTime = 0.0;             // at this animation.time (its pose: moved and deformed meshes)
     std::unique_ptr<RayScene> rays;
     gl::Texture mismatch;  // the current method's mismatch picture
 };

@@ -34,27 +34,37 @@ ShaderHandle compile(GLenum stage, std::string_view file, std::string_view defin
 
 }  // namespace
 
+std::optional<Program> Program::link(std::initializer_list<GLuint> shaders, const std::string& name,
+                                     std::string& error) {
+    Program program;
+    program.handle_ = ProgramHandle(glCreateProgram());
+    for (GLuint shader : shaders) glAttachShader(program.id(), shader);
+    glLinkProgram(program.id());
+    for (GLuint shader : shaders) glDetachShader(program.id(), shader);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        error = "linking " + name + " failed:\n" + infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog);
+        return std::nullopt;
+    }
+    return program;
+}
+
 std::optional<Program> Program::build(std::string_view vertexFile, std::string_view fragmentFile,
                                       std::string_view defines, std::string& error) {
     ShaderHandle vertex = compile(GL_VERTEX_SHADER, vertexFile, defines, error);
     if (!vertex) return std::nullopt;
     ShaderHandle fragment = compile(GL_FRAGMENT_SHADER, fragmentFile, defines, error);
     if (!fragment) return std::nullopt;
-    Program program;
-    program.handle_ = ProgramHandle(glCreateProgram());
-    glAttachShader(program.id(), vertex.id());
-    glAttachShader(program.id(), fragment.id());
-    glLinkProgram(program.id());
-    glDetachShader(program.id(), vertex.id());
-    glDetachShader(program.id(), fragment.id());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        error = "linking '" + std::string(vertexFile) + "' + '" + std::string(fragmentFile) + "' failed:\n" +
-                infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog);
-        return std::nullopt;
-    }
-    return program;
+    return link({vertex.id(), fragment.id()}, "'" + std::string(vertexFile) + "' + '" + std::string(fragmentFile) + "'",
+                error);
+}
+
+std::optional<Program> Program::buildCompute(std::string_view computeFile, std::string_view defines,
+                                             std::string& error) {
+    ShaderHandle compute = compile(GL_COMPUTE_SHADER, computeFile, defines, error);
+    if (!compute) return std::nullopt;
+    return link({compute.id()}, "'" + std::string(computeFile) + "'", error);
 }
 
 GLint Program::location(const std::string& name) const {

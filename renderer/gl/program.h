@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,9 @@ public:
     // `defines` are "#define NAME VALUE\n" lines inserted after #version (variants by #define).
     static std::optional<Program> build(std::string_view vertexFile, std::string_view fragmentFile,
                                         std::string_view defines, std::string& error);
+    // A compute program from one shader file (the same #include and #define handling).
+    static std::optional<Program> buildCompute(std::string_view computeFile, std::string_view defines,
+                                               std::string& error);
 
     GLuint id() const { return handle_.id(); }
     explicit operator bool() const { return bool(handle_); }
@@ -37,6 +41,8 @@ public:
     }
 
 private:
+    static std::optional<Program> link(std::initializer_list<GLuint> shaders, const std::string& name,
+                                       std::string& error);
     ProgramHandle handle_;
     mutable std::unordered_map<std::string, GLint> locations_;  // a cache only
 };

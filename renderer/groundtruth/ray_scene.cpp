@@ -1,5 +1,7 @@
 #include "groundtruth/ray_scene.h"
 
+#include "scenes/skinning.h"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -154,9 +156,11 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
         if (inst.mesh >= 0 && inst.mesh < int(scene.meshes.size())) primitiveCount += scene.meshes[inst.mesh].primitives.size();
     impl.masks.reserve(primitiveCount);
 
+    std::vector<glm::vec3> posed;  // a deformed primitive's positions at the scene's current pose
     for (std::size_t instance = 0; instance < scene.instances.size(); ++instance) {
         const MeshInstance& inst = scene.instances[instance];
         if (inst.mesh < 0 || inst.mesh >= int(scene.meshes.size())) continue;
+        const Pose pose = instancePose(scene, inst);  // skins and morph targets: as the GPU deforms them
         for (const Primitive& prim : scene.meshes[std::size_t(inst.mesh)].primitives) {
             if (prim.indices.size() < 3 || prim.positions.empty()) continue;
             const std::size_t triangles = prim.indices.size() / 3;
@@ -170,9 +174,11 @@ std::unique_ptr<RayScene> RayScene::build(const Scene& scene, std::string& error
                 error = impl.deviceError.empty() ? "Embree: cannot allocate geometry buffers" : impl.deviceError;
                 return nullptr;
             }
+            if (pose.deforms()) deformPrimitive(prim, pose, posed, nullptr);
+            const std::vector<glm::vec3>& positions = pose.deforms() ? posed : prim.positions;
             // World space in double, stored in float (as the GPU draws it).
-            for (std::size_t v = 0; v < prim.positions.size(); ++v) {
-                const glm::dvec3 w = glm::dvec3(inst.world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0));
+            for (std::size_t v = 0; v < positions.size(); ++v) {
+                const glm::dvec3 w = glm::dvec3(inst.world * glm::dvec4(glm::dvec3(positions[v]), 1.0));
                 vertices[3 * v] = float(w.x);
                 vertices[3 * v + 1] = float(w.y);
                 vertices[3 * v + 2] = float(w.z);

@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <chrono>
+#include <iostream>
 #include <cmath>
 
 namespace shadowlab {
@@ -114,6 +115,11 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
     vertices_ = gl::createBuffer();
     glNamedBufferStorage(vertices_.id(), GLsizeiptr(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
                          vertices.empty() ? nullptr : vertices.data(), 0);
+    std::vector<std::vector<GLint>> baseVertex(meshes_.size());
+    for (std::size_t m = 0; m < meshes_.size(); ++m)
+        for (const GpuPrimitive& p : meshes_[m].primitives) baseVertex[m].push_back(p.baseVertex);
+    deformer_ = std::make_unique<GpuDeformer>(scene, baseVertex);
+    if (deformer_->empty()) deformer_.reset();
     indices_ = gl::createBuffer();
     glNamedBufferStorage(indices_.id(), GLsizeiptr(std::max<std::size_t>(1, indices.size()) * sizeof(std::uint32_t)),
                          indices.empty() ? nullptr : indices.data(), 0);
@@ -188,12 +194,28 @@ void GpuScene::uploadMaterials(const Scene& scene) {
     glNamedBufferStorage(materialData_.id(), GLsizeiptr(data.size() * sizeof(MaterialData)), data.data(), 0);
 }
 
-void GpuScene::updateInstances(const Scene& scene) {
+void GpuScene::updateInstances(const Scene& scene, std::vector<std::uint32_t>* changed) {
     std::vector<InstanceData> data;
     data.reserve(scene.instances.size());
     for (const MeshInstance& inst : scene.instances) data.push_back(instanceData(inst));
     if (!data.empty())
         glNamedBufferSubData(instanceData_.id(), 0, GLsizeiptr(data.size() * sizeof(InstanceData)), data.data());
+    const bool fresh = uploadedWorld_.size() != scene.instances.size();
+    uploadedWorld_.resize(scene.instances.size());
+    movedScratch_.assign(scene.instances.size(), fresh ? 1 : 0);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        if (uploadedWorld_[i] != scene.instances[i].world) movedScratch_[i] = 1;
+        uploadedWorld_[i] = scene.instances[i].world;
+    }
+    std::string error;
+    if (deformer_ && !deformer_->update(scene, vertices_.id(), movedScratch_, error)) {
+        std::cerr << "shadowlab: skinned and morphed meshes stay in their bind pose: " << error << "\n";
+        deformer_.reset();
+    }
+    if (!changed) return;
+    changed->clear();
+    for (std::size_t i = 0; i < movedScratch_.size(); ++i)
+        if (movedScratch_[i]) changed->push_back(std::uint32_t(i));
 }
 
 void GpuScene::bindVertexArray() const {

@@ -8,8 +8,10 @@
 #include "culling/instance_culling.h"
 #include "gl/gl_objects.h"
 #include "scenes/scene.h"
+#include "resources/gpu_deform.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace shadowlab {
@@ -61,8 +63,13 @@ public:
     bool uploadPendingTextures(const Scene& scene, double budgetMs);
     std::size_t pendingTextures() const { return pendingTextures_.size(); }
 
-    // Re-uploads the instance matrices after the node transforms changed (animation).
-    void updateInstances(const Scene& scene);
+    // Re-uploads the instance matrices after the node transforms changed (animation), and the
+    // vertices of deformed meshes (skins, morph targets) whose pose changed. `changed` (optional)
+    // gets the instances whose world matrix or pose differs from the previous upload.
+    void updateInstances(const Scene& scene, std::vector<std::uint32_t>* changed = nullptr);
+    // Vertices deformed on the GPU since the upload (skins, morph targets).
+    std::size_t deformedVertices() const { return deformer_ ? deformer_->deformedVertices() : 0; }
+    GLuint vertexBuffer() const { return vertices_.id(); }  // position, normal, texcoord (8 floats)
 
     // Binds the vertex array (slot order) and the instance and material buffers.
     void bindVertexArray() const;
@@ -120,6 +127,9 @@ private:
     std::vector<gl::SamplerObject> samplers_;
     std::vector<GpuMesh> meshes_;
     std::size_t triangles_ = 0;
+    std::vector<glm::dmat4> uploadedWorld_;  // per Scene::instances entry, as last uploaded
+    std::unique_ptr<GpuDeformer> deformer_;  // skinned and morphed meshes (none: null)
+    std::vector<std::uint8_t> movedScratch_;
 };
 
 }  // namespace shadowlab

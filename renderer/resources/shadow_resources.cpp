@@ -10,7 +10,7 @@ bool ShadowMapKey::operator==(const ShadowMapKey& o) const {
         return a.radial == b.radial && a.origin == b.origin && a.axis == b.axis && a.nearDepth == b.nearDepth &&
                a.farDepth == b.farDepth;
     };
-    return scene == o.scene && sceneVersion == o.sceneVersion && size == o.size &&
+    return scene == o.scene && sceneVersion == o.sceneVersion && castersMoved == o.castersMoved && size == o.size &&
            worldToShadowClip == o.worldToShadowClip && reversedDepth == o.reversedDepth &&
            linearDepth == o.linearDepth && (!linearDepth || sameLinear(linear, o.linear)) && mirrored == o.mirrored &&
            offsetMode == o.offsetMode && slopeFactor == o.slopeFactor && slopeUnits == o.slopeUnits &&

@@ -13,11 +13,13 @@ namespace shadowlab {
 // map was rendered with, the map is reused (skip.reuseShadowMap). The light, the camera (every
 // method here orients or focuses the map by the view, even unfocused SSM) and the method's
 // parameters enter through the warp matrix and the linear-depth range; the casters through the
-// culled caster set and the scene version (animation). Lookup-only settings (PCF kernel, constant
+// culled caster set and when one of them last moved or deformed (animation): a moving non-caster
+// leaves the map valid. Lookup-only settings (PCF kernel, constant
 // offset, blur, view mode, overlays) are not part of it.
 struct ShadowMapKey {
     const void* scene = nullptr;
-    std::uint64_t sceneVersion = 0;  // bumped by every upload of instances or materials
+    std::uint64_t sceneVersion = 0;  // bumped by every upload of geometry or materials
+    std::uint64_t castersMoved = 0;  // the latest instance update that moved (or deformed) a caster
     int size = 0;
     glm::dmat4 worldToShadowClip{1.0};
     bool reversedDepth = false;
