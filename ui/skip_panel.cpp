@@ -27,8 +27,8 @@ bool drawSkipPanel(Settings& s) {
                         "textures.");
     changed |= checkbox("cluster culling", k.clusterCulling,
                         "Large meshes are split into clusters of a few hundred triangles at upload; each pass draws "
-                        "only the clusters inside its view frustum (or able to shadow it), through a few indirect "
-                        "draws, instead of the whole mesh.");
+                        "only the clusters inside its view frustum (or able to shadow it) instead of all of them, "
+                        "through a few indirect draws either way.");
     return changed;
 }
 

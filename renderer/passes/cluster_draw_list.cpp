@@ -5,7 +5,8 @@
 namespace shadowlab {
 
 const std::vector<IndirectBatch>& ClusterDrawList::build(const Scene& scene, const GpuScene& gpu,
-                                                         const InstanceList& instances, InstanceList& whole) {
+                                                         const InstanceList& instances, const CullVolume& volume,
+                                                         InstanceList& whole) {
     whole.clear();
     whole.volume = instances.volume;
     batches_.clear();
@@ -23,7 +24,7 @@ const std::vector<IndirectBatch>& ClusterDrawList::build(const Scene& scene, con
         const GLuint slot = mesh.firstSlot + GLuint(at - mesh.instances.begin());
         for (const GpuPrimitive& prim : mesh.primitives) {
             const ClusteredPrimitive& clustered = gpu.clusters()[std::size_t(prim.clusters)];
-            keptClusters(clustered, inst.world, instances.volume, kept_);
+            keptClusters(clustered, inst.world, volume, kept_);
             // One batch per (material, winding): find or open it.
             auto batch = std::find_if(batches_.begin(), batches_.end(), [&](const IndirectBatch& b) {
                 return b.material == prim.material && b.mirrored == inst.mirrored;

@@ -35,10 +35,10 @@ struct IndirectBatch {
 class ClusterDrawList {
 public:
     // Splits `instances` into those of meshes drawn whole (`whole`, keeping the list's volume) and
-    // those drawn by clusters, whose commands it builds, uploads and binds to
-    // GL_DRAW_INDIRECT_BUFFER. Returns the batches (valid until the next call).
+    // those drawn by clusters: the clusters `volume` may contain become commands, uploaded and
+    // bound to GL_DRAW_INDIRECT_BUFFER. Returns the batches (valid until the next call).
     const std::vector<IndirectBatch>& build(const Scene& scene, const GpuScene& gpu, const InstanceList& instances,
-                                            InstanceList& whole);
+                                            const CullVolume& volume, InstanceList& whole);
     // Draws one batch (its state already set); the buffer bound by build() must still be bound.
     static void draw(const IndirectBatch& batch);
 

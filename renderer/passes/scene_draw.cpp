@@ -71,11 +71,13 @@ void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const
         ++counts.drawCalls;
         counts.triangles += std::size_t(prim.indexCount / 3) * std::size_t(count);
     };
-    // Large meshes by their clusters kept under the list's volume, a few indirect calls
-    // (skip.clusterCulling); the other instances as below.
+    // Large meshes by their clusters kept under the list's volume, a few indirect calls; with
+    // skip.clusterCulling off every cluster, in the same order, so only the culling differs.
     const InstanceList* whole = &instances;
-    if (frame.settings.skip.clusterCulling && !gpuScene_->clusters().empty()) {
-        for (const IndirectBatch& batch : clusterDraws_.build(scene, *gpuScene_, instances, wholeScratch_))
+    if (!gpuScene_->clusters().empty()) {
+        static const CullVolume kEverything;
+        const CullVolume& volume = frame.settings.skip.clusterCulling ? instances.volume : kEverything;
+        for (const IndirectBatch& batch : clusterDraws_.build(scene, *gpuScene_, instances, volume, wholeScratch_))
             if (useMaterial(batch.material, batch.mirrored)) {
                 ClusterDrawList::draw(batch);
                 countBatch(batch, counts);
