@@ -16,6 +16,7 @@
 #include "gl/program.h"
 #include "resources/gpu_scene.h"
 #include "gl/gpu_timer.h"
+#include "passes/cluster_draw_list.h"
 #include "passes/material_programs.h"
 #include "resources/msaa_target.h"
 #include "resources/measure_pass.h"
@@ -143,6 +144,8 @@ private:
     gl::Program blur_;
     gl::VertexArray emptyVao_;  // fullscreen triangles read no attributes
     std::unique_ptr<GpuScene> gpuScene_;
+    mutable ClusterDrawList clusterDraws_;  // a pass's indirect draws of clustered meshes (scratch)
+    mutable InstanceList wholeScratch_;     // a pass's instances of meshes drawn whole (scratch)
     InstanceCuller culler_;
     const Scene* scene_ = nullptr;    // the scene uploaded last
     std::vector<std::size_t> backdrops_;  // detectBackdrops of the scene uploaded last

@@ -25,6 +25,10 @@ bool drawSkipPanel(Settings& s) {
                         "Programs compiled per material kind (#define): untextured materials skip the texture "
                         "fetch, opaque ones the alpha test, and the shadow pass samples only alpha-masked "
                         "textures.");
+    changed |= checkbox("cluster culling", k.clusterCulling,
+                        "Large meshes are split into clusters of a few hundred triangles at upload; each pass draws "
+                        "only the clusters inside its view frustum (or able to shadow it) instead of all of them, "
+                        "through a few indirect draws either way.");
     return changed;
 }
 

@@ -29,6 +29,7 @@ void InstanceCuller::updateInstances(const Scene& scene) {
 
 void InstanceCuller::visible(const Scene& scene, const ClipPlanes& planes, bool hierarchical, InstanceList& out) const {
     out.clear();
+    out.volume = CullVolume::viewFrustum(planes);
     auto test = [&](const Aabb& box) { return boxMayBeVisible(planes, box); };
     if (hierarchical && bvh_.instanceCount() == scene.instances.size()) bvh_.query(test, out);
     else linearCull(scene, test, out);
@@ -36,6 +37,7 @@ void InstanceCuller::visible(const Scene& scene, const ClipPlanes& planes, bool 
 
 void InstanceCuller::casters(const Scene& scene, const ShadowSetup& setup, bool hierarchical, InstanceList& out) const {
     out.clear();
+    out.volume = CullVolume::casterReach(setup);
     if (!setup.valid) return;
     auto test = [&](const Aabb& box) { return casterCanReach(setup, box); };
     if (hierarchical && bvh_.instanceCount() == scene.instances.size()) bvh_.query(test, out);

@@ -3,6 +3,7 @@
 // against the intersection body B for the shadow pass (thesis 4.2, 9.2.2), either through the
 // instance BVH or by the linear loop over every instance (skip.hierarchicalCulling = false).
 // Both give the same ascending index lists. GL-free.
+#include "culling/cull_volume.h"
 #include "culling/instance_bvh.h"
 #include "frame/frame_setup.h"
 
@@ -11,7 +12,12 @@
 
 namespace shadowlab {
 
-using InstanceList = std::vector<std::uint32_t>;  // indices into Scene::instances, ascending
+// Indices into Scene::instances, ascending, and the volume they were culled against (what the
+// draw culls clustered meshes' clusters against; everything for a list built by hand).
+struct InstanceList : std::vector<std::uint32_t> {
+    using std::vector<std::uint32_t>::vector;
+    CullVolume volume;
+};
 
 class InstanceCuller {
 public:

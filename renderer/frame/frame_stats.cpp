@@ -17,7 +17,12 @@ const char* visibleDepthSourceName(VisibleDepthSource source) {
 
 std::string frameStatsJson(const FrameStats& s) {
     using nlohmann::json;
-    auto counts = [](const PassCounts& c) { return json{{"drawCalls", c.drawCalls}, {"triangles", c.triangles}}; };
+    auto counts = [](const PassCounts& c) { 
+        return json{{"drawCalls", c.drawCalls},
+                    {"triangles", c.triangles},
+                    {"clustersVisible", c.clustersVisible},
+                    {"clustersCulled", c.clustersCulled}};
+    };
     json passes = json::array();
     for (const PassStats& p : s.passes) passes.push_back({{"name", p.name}, {"cpuMs", p.cpuMs}, {"gpuMs", p.gpuMs}});
     const json j = {

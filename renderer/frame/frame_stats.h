@@ -19,6 +19,9 @@ struct PassStats {
 struct PassCounts {
     std::size_t drawCalls = 0;
     std::size_t triangles = 0;
+    // Clusters of large meshes (culling/mesh_clusters.h) over the pass's instances of them.
+    std::size_t clustersVisible = 0;
+    std::size_t clustersCulled = 0;
 };
 
 // Where the visible depth range (PSM auto near, LiSPSM auto z_f) of this frame came from.

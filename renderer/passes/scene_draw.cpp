@@ -1,5 +1,6 @@
 // Drawing the scene's instances in a pass: grouped instanced draws over a culled list (or the
-// runs of the fixed slot order), the material's program variant, storage-buffer entry, texture and
+// runs of the fixed slot order), large meshes by their kept clusters through indirect draws
+// (passes/cluster_draw_list.h), the material's program variant, storage-buffer entry, texture and
 // face culling per draw. No per-draw uniform lookups by name and no per-draw string work.
 #include "renderer.h"
 #include "renderer_frame.h"
@@ -37,9 +38,10 @@ void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const
     gpuScene_->bindVertexArray();
     const gl::Program* current = nullptr;
     GLuint boundTexture = ~0u;
-    auto draw = [&](const GpuPrimitive& prim, GLuint first, GLsizei count, bool mirrored) {
-        const GpuMaterial& m = gpuScene_->material(prim.material);
-        if (surfaces != Surfaces::All && m.blended != (surfaces == Surfaces::Blended)) return;
+    // The material's program, texture and face culling; false when this pass skips the material.
+    auto useMaterial = [&](int material, bool mirrored) {
+        const GpuMaterial& m = gpuScene_->material(material);
+        if (surfaces != Surfaces::All && m.blended != (surfaces == Surfaces::Blended)) return false;
         const DrawProgram p = programFor(m);
         if (p.program != current) {
             p.program->use();
@@ -62,6 +64,10 @@ void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const
         }
         // A negative-scale node flips the winding, and so does a mirroring target projection.
         glFrontFace(mirrored != targetMirrored ? GL_CW : GL_CCW);
+        return true;
+    };
+    auto draw = [&](const GpuPrimitive& prim, GLuint first, GLsizei count, bool mirrored) {
+        if (!useMaterial(prim.material, mirrored)) return;
         glDrawElementsInstancedBaseVertexBaseInstance(
             GL_TRIANGLES, prim.indexCount, GL_UNSIGNED_INT,
             reinterpret_cast<const void*>(std::uintptr_t(prim.firstIndex) * sizeof(std::uint32_t)), count,
@@ -69,16 +75,30 @@ void Renderer::drawScene(const ProgramFor& programFor, const Frame& frame, const
         ++counts.drawCalls;
         counts.triangles += std::size_t(prim.indexCount / 3) * std::size_t(count);
     };
+    // Large meshes by their clusters kept under the list's volume, a few indirect calls; with
+    // skip.clusterCulling off every cluster, in the same order, so only the culling differs.
+    const InstanceList* whole = &instances;
+    if (!gpuScene_->clusters().empty()) {
+        static const CullVolume kEverything;
+        const CullVolume& volume = frame.settings.skip.clusterCulling ? instances.volume : kEverything;
+        for (const IndirectBatch& batch : clusterDraws_.build(scene, *gpuScene_, instances, volume, wholeScratch_))
+            if (useMaterial(batch.material, batch.mirrored)) {
+                ClusterDrawList::draw(batch);
+                countBatch(batch, counts);
+            }
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        whole = &wholeScratch_;
+    }
     if (frame.settings.skip.groupedDraws) {
         // One instanced call per primitive and (mesh, winding) group of the culled list.
-        for (const DrawGroup& g : gpuScene_->bindDrawList(scene, instances))
+        for (const DrawGroup& g : gpuScene_->bindDrawList(scene, *whole))
             for (const GpuPrimitive& prim : gpuScene_->meshes()[std::size_t(g.mesh)].primitives)
                 draw(prim, g.first, g.count, g.mirrored);
         gpuScene_->restoreSlotOrder();
-    } else {
+    } else if (!whole->empty()) {
         // One call per run of consecutive visible slots (the linear layout).
         InstanceMask mask(scene.instances.size(), 0);
-        for (std::uint32_t i : instances) mask[i] = 1;
+        for (std::uint32_t i : *whole) mask[i] = 1;
         gpuScene_->forEachRun(scene, mask, draw);
     }
     glFrontFace(GL_CCW);

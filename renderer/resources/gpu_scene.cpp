@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <cmath>
@@ -95,9 +96,19 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
                           v < p.texcoords.size() ? p.texcoords[v] : glm::vec2(0)};
                 vertices.push_back(vx);
             }
-            indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+            // Large primitives go in cluster order, each cluster a contiguous index range.
+            addClusters(gp, clusterTriangles(p.positions, p.indices, indices));
             meshes_[m].primitives.push_back(gp);
         }
+        // A mesh is drawn by clusters when a primitive of it is: its small ones become one cluster.
+        GpuMesh& mesh = meshes_[m];
+        auto hasClusters = [](const GpuPrimitive& gp) { return gp.clusters >= 0; };
+        if (std::any_of(mesh.primitives.begin(), mesh.primitives.end(), hasClusters))
+            for (std::size_t k = 0; k < mesh.primitives.size(); ++k)
+                if (mesh.primitives[k].clusters < 0)
+                    addClusters(mesh.primitives[k], singleCluster(scene.meshes[m].primitives[k].positions,
+                                                                  scene.meshes[m].primitives[k].indices));
+        mesh.clustered = !mesh.primitives.empty() && std::all_of(mesh.primitives.begin(), mesh.primitives.end(), hasClusters);
     }
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const int mesh = scene.instances[i].mesh;
@@ -169,6 +180,13 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
         samplers_.push_back(std::move(sampler));
     }
     uploadMaterials(scene);
+}
+
+void GpuScene::addClusters(GpuPrimitive& primitive, ClusteredPrimitive clustered) {
+    if (clustered.empty()) return;
+    for (MeshCluster& c : clustered.clusters) c.firstIndex += primitive.firstIndex;
+    primitive.clusters = int(clusters_.size());
+    clusters_.push_back(std::move(clustered));
 }
 
 void GpuScene::uploadMaterials(const Scene& scene) {

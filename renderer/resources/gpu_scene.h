@@ -6,6 +6,7 @@
 // consecutive slots is one instanced call), or a pass's culled draw list, grouped by mesh and
 // winding so each primitive is one instanced call per pass (skip.groupedDraws).
 #include "culling/instance_culling.h"
+#include "culling/mesh_clusters.h"
 #include "gl/gl_objects.h"
 #include "scenes/scene.h"
 #include "resources/gpu_deform.h"
@@ -21,12 +22,14 @@ struct GpuPrimitive {
     GLuint firstIndex = 0;
     GLsizei indexCount = 0;
     int material = -1;
+    int clusters = -1;  // index into GpuScene::clusters(), -1 when always drawn whole
 };
 
 struct GpuMesh {
     std::vector<GpuPrimitive> primitives;
     std::vector<int> instances;  // indices into Scene::instances, in the order of their GPU slots
     GLuint firstSlot = 0;        // slot of instances[0] in the instance buffer
+    bool clustered = false;      // every primitive has clusters (mesh_clusters.h)
 };
 
 // Which instances a pass draws (culling result), one flag per Scene::instances entry.
@@ -81,6 +84,8 @@ public:
     std::vector<DrawGroup> bindDrawList(const Scene& scene, const InstanceList& instances);
     void restoreSlotOrder() const;
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
+    // Clusters of the large primitives, index ranges absolute in the index buffer.
+    const std::vector<ClusteredPrimitive>& clusters() const { return clusters_; }
     GLuint texture(int index) const { return index >= 0 && index < int(textures_.size()) ? textures_[index].id() : 0; }
     GLuint sampler(int index) const { return index >= 0 && index < int(samplers_.size()) ? samplers_[index].id() : 0; }
     std::size_t triangleCount() const { return triangles_; }
@@ -106,6 +111,8 @@ public:
     }
 
 private:
+    // Keeps `clustered` (index ranges relative to the primitive) with absolute ranges.
+    void addClusters(GpuPrimitive& primitive, ClusteredPrimitive clustered);
     // Fills materials_ (texture ids included) and the material buffer. Whatever replaces a texture
     // later (streamed decoding) must call it again, and the renderer must count it as a scene
     // change: alpha-masked textures shape the shadow map (ShadowMapKey::sceneVersion).
@@ -126,6 +133,7 @@ private:
     std::vector<gl::Texture> textures_;
     std::vector<gl::SamplerObject> samplers_;
     std::vector<GpuMesh> meshes_;
+    std::vector<ClusteredPrimitive> clusters_;
     std::size_t triangles_ = 0;
     std::vector<glm::dmat4> uploadedWorld_;  // per Scene::instances entry, as last uploaded
     std::unique_ptr<GpuDeformer> deformer_;  // skinned and morphed meshes (none: null)

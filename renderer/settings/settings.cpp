@@ -79,7 +79,7 @@ void from_json(const json& j, MethodChoice& choice) {
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
-                                   groupedDraws, shaderVariants)
+                                   groupedDraws, shaderVariants, clusterCulling)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
                                    casters, csm, filter, overlays, compare, animation, skip, display)
 

@@ -188,6 +188,7 @@ struct SkipSettings {
     bool asyncDepthReadback = true;    // visible-depth pre-pass read back one frame late (PBO + fence)
     bool groupedDraws = true;          // one instanced call per primitive and pass, not per run of slots
     bool shaderVariants = true;        // untextured / opaque materials skip texture fetch and alpha test
+    bool clusterCulling = true;        // large meshes' clusters culled per pass (off: every cluster drawn)
     bool operator==(const SkipSettings&) const = default;
 };
 

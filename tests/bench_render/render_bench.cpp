@@ -69,7 +69,8 @@ std::vector<Variant> variants() {
             {"no-asyncDepthReadback", [](SkipSettings& k) { k.asyncDepthReadback = false; }},
             {"no-groupedDraws", [](SkipSettings& k) { k.groupedDraws = false; }},
             {"no-shaderVariants", [](SkipSettings& k) { k.shaderVariants = false; }},
-            {"no-skips", [](SkipSettings& k) { k = SkipSettings{false, false, false, false, false}; }}};
+            {"no-clusterCulling", [](SkipSettings& k) { k.clusterCulling = false; }},
+            {"no-skips", [](SkipSettings& k) { k = SkipSettings{false, false, false, false, false, false}; }}};
 }
 
 void frameCost(benchmark::State& state, const std::string& file, ShadowMethod method, const Variant& variant,

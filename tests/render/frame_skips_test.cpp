@@ -21,6 +21,7 @@ Settings withSkips(Settings s, bool on) {
     s.skip.asyncDepthReadback = on;
     s.skip.groupedDraws = on;
     s.skip.shaderVariants = on;
+    s.skip.clusterCulling = on;
     return s;
 }
 
