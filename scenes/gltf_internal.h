@@ -7,6 +7,7 @@
 //   image_decode.cpp     stb_image compiled privately, every allocation bounded by the header
 //   gltf_meshes.cpp      materials, primitives, the geometry budget
 //   gltf_nodes.cpp       nodes, lights, cameras, the instance budget, animations
+//   gltf_draco.cpp       KHR_draco_mesh_compression into plain accessors
 //   gltf_loader.cpp      the steps in order, load limits
 #include "scenes/gltf_loader.h"
 
@@ -61,6 +62,17 @@ void checkDeclaredCounts(const json& root, const LoadLimits& limits);
 void checkExternalFiles(const json& root, const std::filesystem::path& baseDir);
 
 const json* member(const json& object, const char* key);
+// The JSON text tinygltf should parse when it differs from the file's (compressed data it would
+// refuse before the decoders run: Draco index accessors, meshopt fallback buffers); nullopt if not.
+std::optional<std::string> tinygltfJson(const json& root);
+// The GLB with its JSON chunk replaced by `jsonText` (checkGlb has checked the layout).
+std::vector<unsigned char> glbWithJson(const std::vector<unsigned char>& glb, const std::string& jsonText);
+
+// ---------------------------------------------------------------- compressed geometry
+// Run on tinygltf's model before the conversion: compressed data decoded into plain buffers,
+// bufferViews and accessors, so that the converter reads every attribute the same way.
+// KHR_draco_mesh_compression (gltf_draco.cpp): the primitives re-pointed at decoded accessors.
+void decodeDracoPrimitives(tinygltf::Model& model, const json& root, const LoadLimits& limits);
 
 // ---------------------------------------------------------------- images (gltf_textures.cpp)
 // Images are captured encoded while tinygltf parses; only those a base colour texture uses are
