@@ -8,6 +8,7 @@
 //   gltf_meshes.cpp      materials, primitives, the geometry budget
 //   gltf_nodes.cpp       nodes, lights, cameras, the instance budget, animations
 //   gltf_draco.cpp       KHR_draco_mesh_compression into plain accessors
+//   gltf_meshopt.cpp     EXT/KHR_meshopt_compression into plain bufferViews
 //   gltf_loader.cpp      the steps in order, load limits
 #include "scenes/gltf_loader.h"
 
@@ -73,6 +74,8 @@ std::vector<unsigned char> glbWithJson(const std::vector<unsigned char>& glb, co
 // bufferViews and accessors, so that the converter reads every attribute the same way.
 // KHR_draco_mesh_compression (gltf_draco.cpp): the primitives re-pointed at decoded accessors.
 void decodeDracoPrimitives(tinygltf::Model& model, const json& root, const LoadLimits& limits);
+// EXT/KHR_meshopt_compression (gltf_meshopt.cpp): compressed bufferViews re-pointed at decoded bytes.
+void decodeMeshoptViews(tinygltf::Model& model, const json& root, const LoadLimits& limits);
 
 // ---------------------------------------------------------------- images (gltf_textures.cpp)
 // Images are captured encoded while tinygltf parses; only those a base colour texture uses are

@@ -100,6 +100,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
             if (!cleanMessage(line).empty()) warnings.push_back("tinygltf: " + cleanMessage(line).substr(0, 400));
     }
 
+    decodeMeshoptViews(model, root, options.limits);
     decodeDracoPrimitives(model, root, options.limits);
 
     Scene scene;
