@@ -231,6 +231,10 @@ void checkAssetAndExtensions(const json& root, std::vector<std::string>& warning
         for (const json& e : *required) {
             if (!e.is_string()) continue;
             const std::string name = e.get<std::string>();
+            if (name == "KHR_texture_basisu")
+                fail("requires KHR_texture_basisu (KTX2 / Basis Universal textures), and this build has no Basis "
+                     "Universal decoder (no Debian package provides one): export the file with PNG, JPEG or WebP "
+                     "textures to open it");
             if (!supportedRequired(name))
                 fail("requires the unsupported extension " + name.substr(0, 80) + " (supported: " + supportedList() +
                      ", KHR_materials_*)");
@@ -241,7 +245,7 @@ void checkAssetAndExtensions(const json& root, std::vector<std::string>& warning
         for (const json& e : *used) {
             if (!e.is_string()) continue;
             const std::string name = e.get<std::string>();
-            if (supportedExtension(name)) continue;
+            if (supportedExtension(name) || name == "KHR_texture_basisu") continue;  // basisu: said per texture
             warnings.push_back("optional extension " + name.substr(0, 80) + " is ignored");
         }
     }

@@ -85,6 +85,14 @@ struct ImageCapture {
     std::vector<char> wanted;  // per image: a base colour texture uses it (others are not kept)
     std::map<int, std::shared_ptr<const std::vector<std::uint8_t>>> encoded;
 };
+// The image a texture shows: EXT_texture_webp's source, else the core (PNG/JPEG) source; a
+// KHR_texture_basisu source is never decoded (no Basis Universal decoder is packaged), so a
+// texture with only that has image -1 and its materials use their factors.
+struct TextureSource {
+    int image = -1;
+    bool basisuSkipped = false;  // the texture names a KTX2 image that is not used
+};
+TextureSource textureSource(const json& texture);
 // The images that materials' base colour textures name, from the JSON (before tinygltf's parse).
 std::vector<char> baseColorImages(const json& root);
 bool captureImage(tinygltf::Image* image, int index, std::string* err, std::string* warn, int reqWidth,

@@ -106,7 +106,11 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
     const double parseSeconds = state.load->secondsRunning();
     LoadResult loaded = state.load->take();
     state.load.reset();
-    for (const std::string& w : loaded.warnings) std::cerr << "shadowlab: warning: " << w << "\n";
+    for (const std::string& w : loaded.warnings) {
+        std::cerr << "shadowlab: warning: " << w << "\n";
+        // Textures that cannot be shown change the picture: said on screen too.
+        if (w.find("KHR_texture_basisu") != std::string::npos) state.status.notices.push_back(w);
+    }
     const bool initial = std::exchange(state.initialLoad, false);
     if (!loaded.ok()) {
         state.status.lastError = loaded.error;
