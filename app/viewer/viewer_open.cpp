@@ -89,6 +89,7 @@ void openFile(ViewerState& state, const std::string& file) {
                 state.status.lastError = "still loading " + state.load->file() + "; open " + file + " afterwards";
                 return;
             }
+            state.loadOptions.sceneIndex = state.settings.scene.index = -1;  // another file: its default scene
             startSceneLoad(state, file);
             return;
         case FileKind::View:
@@ -99,6 +100,15 @@ void openFile(ViewerState& state, const std::string& file) {
             state.status.lastError = file + ": not a scene (.gltf, .glb), view state (.json) or screenshot (.png)";
             return;
     }
+}
+
+void reloadForSceneIndex(ViewerState& state) {
+    if (!state.scene || state.load) return;
+    const int index = state.settings.scene.index;
+    // An index past the file's scenes stays unapplied (the combo offers only the file's).
+    if (index < 0 || index == state.scene->shownScene || std::size_t(index) >= state.scene->sceneNames.size()) return;
+    state.loadOptions.sceneIndex = index;
+    startSceneLoad(state, state.scene->source);
 }
 
 void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverrides& overrides) {

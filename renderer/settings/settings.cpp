@@ -76,8 +76,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
                                    groupedDraws, shaderVariants)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneSettings, index)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
-                                   csm, filter, overlays, compare, animation, skip, display)
+                                   csm, filter, overlays, compare, animation, skip, display, scene)
 
 namespace {
 
