@@ -17,6 +17,8 @@
 namespace shadowlab {
 namespace {
 
+using namespace testing_files;
+
 const float kQuad[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 const std::uint32_t kQuadIndices[6] = {0, 1, 2, 0, 2, 3};
 
