@@ -105,6 +105,13 @@ bool readViewFile(const std::string& file, Settings& settings, std::string& erro
     return true;
 }
 
+bool requestedScene(const SettingsOverrides& overrides, LoadOptions& load, std::string& error) {
+    Settings settings;
+    if (!applyOverrides(settings, overrides, error)) return false;
+    load.sceneIndex = settings.scene.index;
+    return true;
+}
+
 bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error) {
     if (!overrides.viewFile.empty() && !readViewFile(overrides.viewFile, settings, error)) return false;
     // One map or cascades (settings/method_choice.h); "all" is render's side by side.

@@ -31,6 +31,8 @@ struct SettingsOverrides {
 };
 // Applies the overrides in that order; false with `error` on a bad file/key/value.
 bool applyOverrides(Settings& settings, const SettingsOverrides& overrides, std::string& error);
+// The glTF scene the overrides ask for (scene.index), into `load` before the file is read.
+bool requestedScene(const SettingsOverrides& overrides, LoadOptions& load, std::string& error);
 
 bool readTextFile(const std::string& file, std::string& text, std::string& error);
 

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include <fcntl.h>
@@ -90,16 +91,35 @@ bool isMaterialExtension(const std::string& name) { return name.rfind("KHR_mater
 
 // Required extensions we can honour; everything else required is refused (glTF 2.0 spec:
 // a loader must not load an asset whose required extension it does not support).
-bool supportedRequired(const std::string& name) {
-    return name == "KHR_mesh_quantization" || name == "KHR_lights_punctual" || name == "KHR_texture_transform" ||
-           isMaterialExtension(name);
+// docs/gltf-support.md lists them with what happens to the others.
+constexpr const char* kSupportedExtensions[] = {
+    "KHR_mesh_quantization",  "KHR_lights_punctual",     "KHR_texture_transform",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
+    "EXT_texture_webp",
+};
+
+bool supportedExtension(const std::string& name) {
+    return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) !=
+           std::end(kSupportedExtensions);
+}
+
+bool supportedRequired(const std::string& name) { return supportedExtension(name) || isMaterialExtension(name); }
+
+std::string supportedList() {
+    std::string list;
+    for (const char* name : kSupportedExtensions) {
+        if (!list.empty()) list.append(", ");
+        list.append(name);
+    }
+    return list;
 }
 
 }  // namespace
 
 std::string label(const char* kind, std::size_t index, const std::string& name) {
-    std::string s = std::string(kind) + " " + std::to_string(index);
-    if (!name.empty()) s += " " + quoted(name);
+    std::string s(kind);
+    s.append(" ").append(std::to_string(index));
+    if (!name.empty()) s.append(" ").append(quoted(name));
     return s;
 }
 
@@ -211,9 +231,13 @@ void checkAssetAndExtensions(const json& root, std::vector<std::string>& warning
         for (const json& e : *required) {
             if (!e.is_string()) continue;
             const std::string name = e.get<std::string>();
+            if (name == "KHR_texture_basisu")
+                fail("requires KHR_texture_basisu (KTX2 / Basis Universal textures), and this build has no Basis "
+                     "Universal decoder (no Debian package provides one): export the file with PNG, JPEG or WebP "
+                     "textures to open it");
             if (!supportedRequired(name))
-                fail("requires the unsupported extension " + name.substr(0, 80) +
-                     " (supported: KHR_mesh_quantization, KHR_lights_punctual, KHR_texture_transform, KHR_materials_*)");
+                fail("requires the unsupported extension " + name.substr(0, 80) + " (supported: " + supportedList() +
+                     ", KHR_materials_*)");
             if (isMaterialExtension(name)) warnings.push_back("required extension " + name + " is ignored (core PBR used)");
         }
     }
@@ -221,8 +245,7 @@ void checkAssetAndExtensions(const json& root, std::vector<std::string>& warning
         for (const json& e : *used) {
             if (!e.is_string()) continue;
             const std::string name = e.get<std::string>();
-            if (name == "KHR_mesh_quantization" || name == "KHR_lights_punctual" || name == "KHR_texture_transform")
-                continue;
+            if (supportedExtension(name) || name == "KHR_texture_basisu") continue;  // basisu: said per texture
             warnings.push_back("optional extension " + name.substr(0, 80) + " is ignored");
         }
     }
@@ -267,6 +290,74 @@ void checkExternalFiles(const json& root, const fs::path& baseDir) {
             fail("image " + std::to_string(i) + ": " + quoted(uri->get<std::string>().substr(0, 200)) +
                  " is not a regular file");
     }
+}
+
+namespace {
+
+bool isMeshoptFallback(const json& buffer) {
+    const json* extensions = member(buffer, "extensions");
+    if (!extensions) return false;
+    for (const char* name : {"EXT_meshopt_compression", "KHR_meshopt_compression"}) {
+        const json* meshopt = member(*extensions, name);
+        const json* fallback = meshopt ? member(*meshopt, "fallback") : nullptr;
+        if (fallback && fallback->is_boolean() && fallback->get<bool>()) return true;
+    }
+    return false;
+}
+
+// Calls `visit` with each primitive object that carries KHR_draco_mesh_compression.
+template <class Visit>
+void forEachDracoPrimitive(json& root, Visit&& visit) {
+    json* meshes = root.is_object() && root.contains("meshes") ? &root["meshes"] : nullptr;
+    if (!meshes || !meshes->is_array()) return;
+    for (json& mesh : *meshes) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+        for (json& primitive : mesh["primitives"]) {
+            const json* extensions = member(primitive, "extensions");
+            if (extensions && member(*extensions, "KHR_draco_mesh_compression")) visit(primitive);
+        }
+    }
+}
+
+}  // namespace
+
+std::optional<std::string> tinygltfJson(const json& root) {
+    bool needed = false;
+    forEachDracoPrimitive(const_cast<json&>(root), [&](json& primitive) { needed |= primitive.contains("indices"); });
+    if (const json* buffers = member(root, "buffers"); buffers && buffers->is_array())
+        for (const json& buffer : *buffers) needed |= isMeshoptFallback(buffer) && !member(buffer, "uri");
+    if (!needed) return std::nullopt;
+    json copy = root;
+    // A Draco primitive's index accessor has no bufferView until decoded: tinygltf would refuse it.
+    forEachDracoPrimitive(copy, [](json& primitive) { primitive.erase("indices"); });
+    // A meshopt fallback buffer has no data (EXT_meshopt_compression: filled by decoding); tinygltf
+    // wants a uri for it, or takes the GLB's BIN chunk. One placeholder byte; the decoder sizes it.
+    if (json* buffers = copy.contains("buffers") ? &copy["buffers"] : nullptr; buffers && buffers->is_array())
+        for (json& buffer : *buffers)
+            if (isMeshoptFallback(buffer) && !member(buffer, "uri")) {
+                buffer["uri"] = "data:application/octet-stream;base64,AA==";
+                buffer["byteLength"] = 1;
+            }
+    return copy.dump();
+}
+
+std::vector<unsigned char> glbWithJson(const std::vector<unsigned char>& glb, const std::string& jsonText) {
+    const std::size_t jsonLength = readU32(glb.data() + 12);
+    const std::size_t rest = std::min<std::size_t>(readU32(glb.data() + 8), glb.size()) - 20 - jsonLength;
+    const std::size_t padded = (jsonText.size() + 3) & ~std::size_t(3);
+    if (padded + rest + 20 > std::numeric_limits<std::uint32_t>::max()) fail("the GLB grows past 4 GB");
+    std::vector<unsigned char> out(20 + padded + rest, ' ');
+    std::copy(glb.begin(), glb.begin() + 8, out.begin());
+    auto put = [&](std::size_t at, std::uint32_t v) {
+        for (int b = 0; b < 4; ++b) out[at + std::size_t(b)] = static_cast<unsigned char>(v >> (8 * b));
+    };
+    put(8, std::uint32_t(out.size()));
+    put(12, std::uint32_t(padded));
+    put(16, kChunkJson);
+    std::copy(jsonText.begin(), jsonText.end(), out.begin() + 20);
+    std::copy(glb.begin() + std::ptrdiff_t(20 + jsonLength), glb.begin() + std::ptrdiff_t(20 + jsonLength + rest),
+              out.begin() + std::ptrdiff_t(20 + padded));
+    return out;
 }
 
 }  // namespace shadowlab::gltf

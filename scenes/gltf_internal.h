@@ -8,6 +8,8 @@
 //   gltf_meshes.cpp      materials, primitives, the geometry budget
 //   gltf_nodes.cpp       nodes, lights, cameras, the instance budget, animations
 //   gltf_deform.cpp      skins, JOINTS_0/WEIGHTS_0, morph targets, node morph weights
+//   gltf_draco.cpp       KHR_draco_mesh_compression into plain accessors
+//   gltf_meshopt.cpp     EXT/KHR_meshopt_compression into plain bufferViews
 //   gltf_loader.cpp      the steps in order, load limits
 #include "scenes/gltf_loader.h"
 
@@ -62,6 +64,19 @@ void checkDeclaredCounts(const json& root, const LoadLimits& limits);
 void checkExternalFiles(const json& root, const std::filesystem::path& baseDir);
 
 const json* member(const json& object, const char* key);
+// The JSON text tinygltf should parse when it differs from the file's (compressed data it would
+// refuse before the decoders run: Draco index accessors, meshopt fallback buffers); nullopt if not.
+std::optional<std::string> tinygltfJson(const json& root);
+// The GLB with its JSON chunk replaced by `jsonText` (checkGlb has checked the layout).
+std::vector<unsigned char> glbWithJson(const std::vector<unsigned char>& glb, const std::string& jsonText);
+
+// ---------------------------------------------------------------- compressed geometry
+// Run on tinygltf's model before the conversion: compressed data decoded into plain buffers,
+// bufferViews and accessors, so that the converter reads every attribute the same way.
+// KHR_draco_mesh_compression (gltf_draco.cpp): the primitives re-pointed at decoded accessors.
+void decodeDracoPrimitives(tinygltf::Model& model, const json& root, const LoadLimits& limits);
+// EXT/KHR_meshopt_compression (gltf_meshopt.cpp): compressed bufferViews re-pointed at decoded bytes.
+void decodeMeshoptViews(tinygltf::Model& model, const json& root, const LoadLimits& limits);
 
 // ---------------------------------------------------------------- images (gltf_textures.cpp)
 // Images are captured encoded while tinygltf parses; only those a base colour texture uses are
@@ -71,6 +86,14 @@ struct ImageCapture {
     std::vector<char> wanted;  // per image: a base colour texture uses it (others are not kept)
     std::map<int, std::shared_ptr<const std::vector<std::uint8_t>>> encoded;
 };
+// The image a texture shows: EXT_texture_webp's source, else the core (PNG/JPEG) source; a
+// KHR_texture_basisu source is never decoded (no Basis Universal decoder is packaged), so a
+// texture with only that has image -1 and its materials use their factors.
+struct TextureSource {
+    int image = -1;
+    bool basisuSkipped = false;  // the texture names a KTX2 image that is not used
+};
+TextureSource textureSource(const json& texture);
 // The images that materials' base colour textures name, from the JSON (before tinygltf's parse).
 std::vector<char> baseColorImages(const json& root);
 bool captureImage(tinygltf::Image* image, int index, std::string* err, std::string* warn, int reqWidth,

@@ -74,6 +74,11 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     checkDeclaredCounts(root, options.limits);
     checkExternalFiles(root, baseDir);
 
+    if (std::optional<std::string> adapted = tinygltfJson(root)) {
+        if (glb) bytes = glbWithJson(bytes, *adapted);
+        jsonText = std::move(*adapted);
+    }
+
     tinygltf::Model model;
     tinygltf::TinyGLTF gltf;
     ImageCapture capture;
@@ -95,6 +100,9 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
         while (std::getline(lines, line))
             if (!cleanMessage(line).empty()) warnings.push_back("tinygltf: " + cleanMessage(line).substr(0, 400));
     }
+
+    decodeMeshoptViews(model, root, options.limits);
+    decodeDracoPrimitives(model, root, options.limits);
 
     Scene scene;
     scene.source = name.string();

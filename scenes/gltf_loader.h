@@ -40,6 +40,9 @@ enum class TextureDecoding { Decode, Deferred, HeadersOnly };
 struct LoadOptions {
     LoadLimits limits;
     TextureDecoding textures = TextureDecoding::Decode;
+    // The glTF scene to show: -1 for the file's default ("scene", else the first); an index past the
+    // file's scenes is an error that names how many it has.
+    int sceneIndex = -1;
     // The fraction done (0 .. 1, never decreasing), after each step: the file read, the JSON,
     // tinygltf's parse, each mesh, each decoded texture (kLoadProgress in gltf_internal.h weighs
     // the steps). Called on the loading thread only, never concurrently; a viewer on another

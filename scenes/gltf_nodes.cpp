@@ -85,6 +85,14 @@ void Converter::convertNodes() {
     int sceneIndex = m.defaultScene;
     if (sceneIndex >= int(m.scenes.size())) fail("default scene " + std::to_string(sceneIndex) + " does not exist");
     if (sceneIndex < 0 && !m.scenes.empty()) sceneIndex = 0;
+    if (options.sceneIndex >= 0) {
+        if (std::size_t(options.sceneIndex) >= m.scenes.size())
+            fail("scene.index " + std::to_string(options.sceneIndex) + " asked for, but the file has " +
+                 std::to_string(m.scenes.size()) + " scene(s)");
+        sceneIndex = options.sceneIndex;
+    }
+    for (const tinygltf::Scene& s : m.scenes) scene.sceneNames.push_back(s.name);
+    scene.shownScene = sceneIndex;
     if (sceneIndex >= 0) {
         for (int r : m.scenes[std::size_t(sceneIndex)].nodes) {
             if (r < 0 || std::size_t(r) >= count)

@@ -36,7 +36,25 @@ bool decodeRgba8(const std::vector<std::uint8_t>& bytes, Texture& texture, std::
     return true;
 }
 
+// An image index from a texture's "source" or an extension's "source"; -1 when absent or invalid.
+int sourceIndex(const json* holder) {
+    const json* source = holder ? member(*holder, "source") : nullptr;
+    return source && source->is_number_unsigned() && source->get<std::uint64_t>() < (1u << 30) ? source->get<int>() : -1;
+}
+
 }  // namespace
+
+TextureSource textureSource(const json& texture) {
+    const json* extensions = member(texture, "extensions");
+    TextureSource chosen;
+    chosen.basisuSkipped = extensions && member(*extensions, "KHR_texture_basisu");
+    // EXT_texture_webp's image is decoded (libwebp); the core source is its fallback.
+    if (const int webp = extensions ? sourceIndex(member(*extensions, "EXT_texture_webp")) : -1; webp >= 0)
+        chosen.image = webp;
+    else
+        chosen.image = sourceIndex(&texture);
+    return chosen;
+}
 
 std::vector<char> baseColorImages(const json& root) {
     const json* images = member(root, "images");
@@ -49,9 +67,8 @@ std::vector<char> baseColorImages(const json& root) {
         const json* info = pbr ? member(*pbr, "baseColorTexture") : nullptr;
         const json* index = info ? member(*info, "index") : nullptr;
         if (!index || !index->is_number_unsigned() || index->get<std::uint64_t>() >= textures->size()) continue;
-        const json* source = member((*textures)[index->get<std::size_t>()], "source");
-        if (source && source->is_number_unsigned() && source->get<std::uint64_t>() < wanted.size())
-            wanted[source->get<std::size_t>()] = 1;
+        const int image = textureSource((*textures)[index->get<std::size_t>()]).image;
+        if (image >= 0 && std::size_t(image) < wanted.size()) wanted[std::size_t(image)] = 1;
     }
     return wanted;
 }
@@ -115,23 +132,35 @@ int Converter::useTexture(int gltfTexture, const std::string& what) {
     if (auto it = textureSlots.find(gltfTexture); it != textureSlots.end()) return it->second;
     const tinygltf::Texture& t = m.textures[std::size_t(gltfTexture)];
     const std::string where = label("texture", std::size_t(gltfTexture), t.name);
-    if (t.source < 0) {
-        warn(where + " has no PNG/JPEG source (only extension sources); drawn untextured");
+    const json* texturesJson = member(root, "textures");
+    const TextureSource chosen = texturesJson && texturesJson->is_array() && std::size_t(gltfTexture) < texturesJson->size()
+                                     ? textureSource((*texturesJson)[std::size_t(gltfTexture)])
+                                     : TextureSource{};
+    const int source = chosen.image;
+    if (source < 0) {
+        if (chosen.basisuSkipped)
+            warn(where + " is a KTX2 / Basis Universal image only (KHR_texture_basisu), and this build has no Basis "
+                         "Universal decoder: " + what + " uses its base colour factor");
+        else
+            warn(where + " has no PNG, JPEG or WebP source; drawn untextured");
         return textureSlots[gltfTexture] = -1;
     }
-    if (std::size_t(t.source) >= m.images.size()) fail(where + ": image " + std::to_string(t.source) + " does not exist");
+    if (chosen.basisuSkipped)
+        warn(where + ": its KTX2 / Basis Universal image is not decoded (no Basis Universal decoder in this build), "
+                     "its PNG/JPEG/WebP source is used instead");
+    if (std::size_t(source) >= m.images.size()) fail(where + ": image " + std::to_string(source) + " does not exist");
     if (t.sampler >= 0 && std::size_t(t.sampler) >= m.samplers.size())
         fail(where + ": sampler " + std::to_string(t.sampler) + " does not exist");
-    if (!images.encoded.count(t.source))
-        fail(imageLabel(m, t.source) + " could not be read (missing or unreadable file)");
+    if (!images.encoded.count(source))
+        fail(imageLabel(m, source) + " could not be read (missing or unreadable file)");
     // Textures that differ only by name share one decoded copy.
-    const TextureKey key{t.source, t.sampler};
+    const TextureKey key{source, t.sampler};
     if (auto it = sharedSlots.find(key); it != sharedSlots.end()) return textureSlots[gltfTexture] = it->second;
 
     Texture texture;
-    if (!imageFitsBudget(t.source, texture.width, texture.height))
+    if (!imageFitsBudget(source, texture.width, texture.height))
         return textureSlots[gltfTexture] = sharedSlots[key] = -1;
-    const tinygltf::Image& image = m.images[std::size_t(t.source)];
+    const tinygltf::Image& image = m.images[std::size_t(source)];
     texture.name = !t.name.empty() ? t.name : !image.name.empty() ? image.name : image.uri;
     if (t.sampler >= 0) {
         const tinygltf::Sampler& s = m.samplers[std::size_t(t.sampler)];
@@ -140,10 +169,10 @@ int Converter::useTexture(int gltfTexture, const std::string& what) {
         texture.sampler.wrapS = s.wrapS;
         texture.sampler.wrapT = s.wrapT;
     }
-    if (options.textures == TextureDecoding::Deferred) texture.encoded = images.encoded.at(t.source);
+    if (options.textures == TextureDecoding::Deferred) texture.encoded = images.encoded.at(source);
     const int slot = int(scene.textures.size());
     scene.textures.push_back(std::move(texture));
-    slotImages.push_back(t.source);
+    slotImages.push_back(source);
     return textureSlots[gltfTexture] = sharedSlots[key] = slot;
 }
 

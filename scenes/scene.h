@@ -184,6 +184,9 @@ struct Scene {
     bool defaultLight = false;   // no light in the file: a sun was added
     bool defaultCamera = false;  // no camera in the file: a framing camera was added
     std::vector<std::string> warnings;
+    // The glTF file's scenes (a name each, may be empty) and the one shown (LoadOptions::sceneIndex).
+    std::vector<std::string> sceneNames;
+    int shownScene = -1;  // -1: the file has no scenes array (every parentless node is a root)
 
     std::size_t triangleCount() const;  // drawn triangles, per instance
 };

@@ -473,6 +473,21 @@ bool drawCameraPanel(Settings& s, const Scene& scene) {
             if (flow[i].shown != names[i] && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", names[i].c_str());
         }
     }
+    if (scene.sceneNames.size() > 1) {
+        auto name = [&](int i) {
+            const std::string& n = scene.sceneNames[std::size_t(i)];
+            return "scene " + std::to_string(i) + (n.empty() ? "" : " " + n);
+        };
+        if (ImGui::BeginCombo("glTF scene", name(std::max(scene.shownScene, 0)).c_str())) {
+            for (int i = 0; i < int(scene.sceneNames.size()); ++i)
+                if (ImGui::Selectable(name(i).c_str(), i == scene.shownScene)) {
+                    s.scene.index = i;  // the viewer reloads the file with this scene (scene.index)
+                    changed = true;
+                }
+            ImGui::EndCombo();
+        }
+        tip("The file holds several scenes (glTF 2.0 3.5); the default one opens. Choosing another reloads the file.");
+    }
     return changed;
 }
 

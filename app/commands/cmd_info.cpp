@@ -3,6 +3,7 @@
 // Textures are only sized from their headers, never decoded: info prints none of their pixels.
 #include "commands.h"
 #include "frame/caster_model.h"
+#include "view_setup.h"
 #include "scenes/gltf_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -18,6 +19,7 @@ namespace {
 struct InfoOptions {
     std::string scene;
     std::vector<std::string> limits;
+    std::vector<std::string> sets;
 };
 
 }  // namespace
@@ -38,11 +40,13 @@ void addInfoCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("info", "Load a glTF scene and print what it holds");
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     addLoadLimitOption(*cmd, options->limits);
+    cmd->add_option("--set", options->sets, "a setting as key=value; scene.index=N picks the glTF scene (repeatable)");
     cmd->callback([options] {
         LoadOptions load;
         load.textures = TextureDecoding::HeadersOnly;
         std::string error;
-        if (!applyLoadLimits(load, options->limits, error)) {
+        if (!requestedScene(SettingsOverrides{"", "", options->sets}, load, error) ||
+            !applyLoadLimits(load, options->limits, error)) {
             std::cerr << "shadowlab info: " << error << "\n";
             throw CLI::RuntimeError(2);
         }
@@ -60,6 +64,13 @@ void addInfoCommand(CLI::App& app) {
                                                 : std::to_string(casters.backdrops.size()) + " backdrop(s)")
                   << "\n";
         for (const std::string& n : casters.notices) std::cout << "  " << n << "\n";
+        if (scene.sceneNames.size() > 1) {
+            std::cout << "scenes: " << scene.sceneNames.size() << " (shown: " << scene.shownScene
+                      << "; pick one with --set scene.index=N)\n";
+            for (std::size_t i = 0; i < scene.sceneNames.size(); ++i)
+                std::cout << "  [" << i << "] " << (scene.sceneNames[i].empty() ? "(unnamed)" : "\"" + scene.sceneNames[i] + "\"")
+                          << (int(i) == scene.shownScene ? " (shown)" : "") << "\n";
+        }
     });
 }
 

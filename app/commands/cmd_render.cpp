@@ -178,6 +178,7 @@ void runRender(RenderOptions options) {
     std::string error;
     LoadOptions load;
     if (!applyLoadLimits(load, options.limits, error)) fail(error, 2);
+    if (!requestedScene(options.overrides, load, error)) fail(error);
     std::optional<Scene> scene = loadSceneReporting(options.scene, load);
     if (!scene) throw CLI::RuntimeError(1);
     Settings settings = initialSettings(*scene);

@@ -355,6 +355,10 @@ void runViewer(const ViewerOptions& options) {
     ViewerState state;
     state.showUi = !options.noUi;
     applyLoadLimits(state.loadOptions, options.limits, error);  // checked above
+    if (!requestedScene(options.overrides, state.loadOptions, error)) {
+        std::cerr << "shadowlab: " << error << "\n";
+        throw CLI::RuntimeError(1);
+    }
     state.abView = options.abView;
     if (options.abMode == "wipe") state.ab.mode = ui::AbMode::Wipe;
     else if (options.abMode == "diff") state.ab.mode = ui::AbMode::Difference;
@@ -412,6 +416,7 @@ void runViewer(const ViewerOptions& options) {
         }
         state.uploadNext = state.load && state.load->done();
         for (const std::string& file : std::exchange(events.droppedFiles, {})) openFile(state, file);
+        reloadForSceneIndex(state);
 
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);

@@ -122,6 +122,7 @@ void openFile(ViewerState& state, const std::string& file) {
                 state.status.lastError = "still loading " + state.load->file() + "; open " + file + " afterwards";
                 return;
             }
+            state.loadOptions.sceneIndex = state.settings.scene.index = -1;  // another file: its default scene
             startSceneLoad(state, file);
             return;
         case FileKind::View:
@@ -134,12 +135,25 @@ void openFile(ViewerState& state, const std::string& file) {
     }
 }
 
+void reloadForSceneIndex(ViewerState& state) {
+    if (!state.scene || state.load) return;
+    const int index = state.settings.scene.index;
+    // An index past the file's scenes stays unapplied (the combo offers only the file's).
+    if (index < 0 || index == state.scene->shownScene || std::size_t(index) >= state.scene->sceneNames.size()) return;
+    state.loadOptions.sceneIndex = index;
+    startSceneLoad(state, state.scene->source);
+}
+
 void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverrides& overrides) {
     const std::string file = state.load->file();
     const double parseSeconds = state.load->secondsRunning();
     LoadResult loaded = state.load->take();
     state.load.reset();
-    for (const std::string& w : loaded.warnings) std::cerr << "shadowlab: warning: " << w << "\n";
+    for (const std::string& w : loaded.warnings) {
+        std::cerr << "shadowlab: warning: " << w << "\n";
+        // Textures that cannot be shown change the picture: said on screen too.
+        if (w.find("KHR_texture_basisu") != std::string::npos) state.status.notices.push_back(w);
+    }
     const bool initial = std::exchange(state.initialLoad, false);
     if (!loaded.ok()) {
         state.status.lastError = loaded.error;

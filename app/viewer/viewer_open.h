@@ -20,6 +20,8 @@ void openFile(ViewerState& state, const std::string& file);
 // A finished load: the new scene replaces the current one, or the error is shown and the current
 // scene stays. The command line's scene takes `overrides`.
 void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverrides& overrides);
+// settings.scene.index (the glTF scene combo) differs from the scene shown: the file reloads with it.
+void reloadForSceneIndex(ViewerState& state);
 
 // The settings' notices about the scene (sceneNotices: a light.sceneLight beyond its lights,
 // light.animateSun under a scene light) into the toast, each once when it becomes true.

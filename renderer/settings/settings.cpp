@@ -80,8 +80,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
                                    groupedDraws, shaderVariants, clusterCulling)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneSettings, index)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Settings, method, shadowMapSize, shadows, viewMode, camera, light, lispsm, psm, bias,
-                                   casters, csm, filter, overlays, compare, animation, skip, display)
+                                   casters, csm, filter, overlays, compare, animation, skip, display, scene)
 
 namespace {
 

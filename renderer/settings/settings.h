@@ -205,6 +205,12 @@ struct DisplaySettings {
     bool operator==(const DisplaySettings&) const = default;
 };
 
+// Which of a glTF file's scenes is shown (glTF 2.0 3.5: "scene", else any); chosen at load time.
+struct SceneSettings {
+    int index = -1;  // -1: the file's default scene
+    bool operator==(const SceneSettings&) const = default;
+};
+
 struct Settings {
     ShadowMethod method = ShadowMethod::Lispsm;
     int shadowMapSize = 2048;  // 256..8192
@@ -223,6 +229,7 @@ struct Settings {
     AnimationSettings animation;
     SkipSettings skip;
     DisplaySettings display;
+    SceneSettings scene;
     bool operator==(const Settings&) const = default;
 };
 

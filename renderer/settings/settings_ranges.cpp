@@ -44,6 +44,7 @@ const NumberSetting kNumbers[] = {
     REAL("camera.farPlane", camera.farPlane, 1e-5, 1e9),  // and > nearPlane, below
     REAL("camera.moveSpeed", camera.moveSpeed, 1e-4, 1e6),
     INTEGER("light.sceneLight", light.sceneLight, 0, 1 << 20),
+    INTEGER("scene.index", scene.index, -1, 1 << 20),
     REAL("light.azimuthDeg", light.azimuthDeg, -1e6, 1e6),
     REAL("light.elevationDeg", light.elevationDeg, -90.0, 90.0),
     VECTOR("light.spotPosition", light.spotPosition, -1e7, 1e7),

@@ -22,6 +22,28 @@ void BM_LoadSponza(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadSponza)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The image decoders alone: Sponza's base colour textures (PNG and JPEG) decoded one after the
+// other on one thread (the loader decodes them in parallel).
+void BM_DecodeSponzaTextures(benchmark::State& state) {
+    shadowlab::LoadOptions options;
+    options.textures = shadowlab::TextureDecoding::Deferred;
+    shadowlab::LoadResult r = shadowlab::loadScene(kSponza, options);
+    if (!r.ok()) {
+        state.SkipWithError(r.error.c_str());
+        return;
+    }
+    for (auto _ : state) {
+        for (const shadowlab::Texture& texture : r.scene->textures) {
+            shadowlab::Texture copy = texture;
+            std::string error;
+            if (!shadowlab::decodeTexture(copy, error)) state.SkipWithError(error.c_str());
+            benchmark::DoNotOptimize(copy.rgba8.data());
+        }
+    }
+    state.counters["textures"] = double(r.scene->textures.size());
+}
+BENCHMARK(BM_DecodeSponzaTextures)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // What animation pays per frame: world matrices, exact instance bounds, lights, cameras.
 void BM_UpdateWorldTransformsSponza(benchmark::State& state) {
     shadowlab::LoadResult r = shadowlab::loadScene(kSponza);
