@@ -21,3 +21,16 @@ function(shadowlab_reuse_precompiled target from)
     target_precompile_headers(${target} REUSE_FROM ${from})
   endif()
 endfunction()
+
+# shadowlab_precompiled_header_owner(NAME HEADERS header... [LINK target...] [OPTIONS option...]):
+# an object library whose only job is to build a precompiled header that other targets reuse
+# (shadowlab_reuse_precompiled); OPTIONS are the compile options its users share.
+function(shadowlab_precompiled_header_owner name)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "HEADERS;LINK;OPTIONS")
+  set(anchor ${CMAKE_CURRENT_BINARY_DIR}/${name}.cpp)
+  file(CONFIGURE OUTPUT ${anchor} CONTENT "// Anchor of a precompiled header that other targets reuse.\n")
+  add_library(${name} OBJECT ${anchor})
+  target_link_libraries(${name} PRIVATE ${ARG_LINK})
+  target_compile_options(${name} PRIVATE ${ARG_OPTIONS})
+  shadowlab_precompile(${name} ${ARG_HEADERS})
+endfunction()
