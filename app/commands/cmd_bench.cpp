@@ -242,7 +242,7 @@ void addBenchCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "bench", "Error against run time: every case of a JSON spec timed and measured (footprint, ground truth, "
                  "temporal stability, distance to the limit); results.json/csv, charts, a table");
-    cmd->add_option("spec", options->spec, "bench spec (JSON; see app/commands/bench_spec.h or the README)");
+    cmd->add_option("spec", options->spec, "bench spec (JSON; keys in docs/instruments.md and app/commands/bench_spec.h)");
     cmd->add_flag("--quick", options->quick, "the built-in spec: forest (+ Sponza when found), 640x360, minutes");
     cmd->add_option("--out,-o", options->out, "output folder")->required();
     cmd->add_flag("--no-charts", options->noCharts, "skip the matplotlib charts");

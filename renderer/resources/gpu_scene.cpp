@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <iostream>
 #include <cmath>
 
@@ -96,8 +97,11 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
                           v < p.texcoords.size() ? p.texcoords[v] : glm::vec2(0)};
                 vertices.push_back(vx);
             }
-            // Large primitives go in cluster order, each cluster a contiguous index range.
-            addClusters(gp, clusterTriangles(p.positions, p.indices, indices));
+            // Large primitives go in cluster order, each cluster a contiguous index range. Skinned
+            // and morphed meshes stay whole: cluster bounds are of the bind pose, which the pose leaves.
+            const bool deformed = scene.meshes[m].skinned() || scene.meshes[m].morphed();
+            addClusters(gp, clusterTriangles(p.positions, p.indices, indices, kClusterTriangles,
+                                             deformed ? SIZE_MAX : kMinClusteredTriangles));
             meshes_[m].primitives.push_back(gp);
         }
         // A mesh is drawn by clusters when a primitive of it is: its small ones become one cluster.

@@ -63,7 +63,7 @@ protected:
         std::vector<RayReceiver> receivers;
         for (std::size_t i = 0; i < frame.pixelCount(); ++i)
             if (frame.receiver[i]) receivers.push_back({frame.position[i], frame.normal[i]});
-        const auto lit = rays->visibleFromLight(receivers, shadowLight(resolveLight(scene, settings.light, 0.0)));
+        const auto lit = rays->visibleFromLight(receivers, shadowLight(resolveLight(scene, settings.light, 0.0)), frame.casters);
         ShadowStateFrame states{kWidth, kHeight, frame.receiver, frame.shadowTerm,
                                 std::vector<std::uint8_t>(frame.pixelCount(), 0)};
         std::size_t dark = 0;
