@@ -1,5 +1,7 @@
 #include "viewer/ground_probe.h"
 
+#include "math/ray_box.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -24,23 +26,6 @@ double hitDistance(const glm::dvec3& origin, const glm::dvec3& dir, const glm::d
     const double v = glm::dot(dir, q) * inv;
     if (v < 0.0 || u + v > 1.0) return -1.0;
     return glm::dot(e2, q) * inv;
-}
-
-// Whether the ray origin + t dir (t in [0, tMax]) can touch `box` (slab test).
-bool rayMayHit(const Aabb& box, const glm::dvec3& origin, const glm::dvec3& dir, double tMax) {
-    double t0 = 0.0, t1 = tMax;
-    for (int i = 0; i < 3; ++i) {
-        if (std::abs(dir[i]) < 1e-300) {
-            if (origin[i] < box.min[i] || origin[i] > box.max[i]) return false;
-            continue;
-        }
-        double a = (box.min[i] - origin[i]) / dir[i], b = (box.max[i] - origin[i]) / dir[i];
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-        if (t0 > t1) return false;
-    }
-    return true;
 }
 
 // Below this many triangles a primitive is searched whole.
@@ -111,7 +96,7 @@ std::optional<double> nearestBelow(const Scene& scene, const std::vector<std::ve
         const auto& prims = scene.meshes[std::size_t(instance.mesh)].primitives;
         for (std::size_t pi = 0; pi < prims.size(); ++pi) {
             const Primitive& prim = prims[pi];
-            if (!rayMayHit(prim.bounds, origin, dir, nearest)) continue;
+            if (double enter = 0.0; !rayEntersBox(prim.bounds, origin, dir, nearest, enter)) continue;
             const auto& pos = prim.positions;
             auto test = [&](std::size_t t) {
                 const std::uint32_t ia = prim.indices[3 * t], ib = prim.indices[3 * t + 1], ic = prim.indices[3 * t + 2];

@@ -1,6 +1,7 @@
 #include "frame/caster_model.h"
 
 #include "math/random.h"
+#include "math/ray_box.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -40,24 +41,6 @@ std::size_t triangleCount(const Scene& scene, const MeshInstance& inst) {
     if (inst.mesh >= 0 && inst.mesh < int(scene.meshes.size()))
         for (const Primitive& prim : scene.meshes[std::size_t(inst.mesh)].primitives) n += prim.indices.size() / 3;
     return n;
-}
-
-// Slab test: the ray's parameter interval inside the box, empty when it misses.
-bool rayEntersBox(const Aabb& box, const glm::dvec3& origin, const glm::dvec3& dir, double& tEnter) {
-    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3; ++a) {
-        if (std::abs(dir[a]) < 1e-300) {
-            if (origin[a] < box.min[a] || origin[a] > box.max[a]) return false;
-            continue;
-        }
-        double near = (box.min[a] - origin[a]) / dir[a], far = (box.max[a] - origin[a]) / dir[a];
-        if (near > far) std::swap(near, far);
-        t0 = std::max(t0, near);
-        t1 = std::min(t1, far);
-        if (t0 > t1) return false;
-    }
-    tEnter = t0;
-    return true;
 }
 
 // Moeller-Trumbore distance along the ray, either side; infinity on a miss.
@@ -225,7 +208,7 @@ std::size_t pickInstance(const Scene& scene, const glm::dvec3& origin, const glm
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         double enter = 0.0;
-        if (!rayEntersBox(scene.instances[i].worldBounds, origin, dir, enter) || enter > nearest) continue;
+        if (!rayEntersBox(scene.instances[i].worldBounds, origin, dir, nearest, enter)) continue;
         for (const WorldTriangle& t : worldTriangles(scene, scene.instances[i], SIZE_MAX)) {
             const double d = rayDistance(t, origin, dir);
             if (d < nearest) nearest = d, best = i;

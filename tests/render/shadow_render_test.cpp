@@ -297,7 +297,8 @@ TEST_F(Acne, EveryBiasCombinationRendersWithoutGlErrors) {
                 for (ShadowMethod m : {ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm}) {
                     const Scene scene = planeBoxScene(fromSide());
                     Settings s = shadowView(m);
-                    s.bias = {dist, mode, 0.002, 2.0, 4.0, back};
+                    s.bias = {dist, mode, 0.002, 2.0, 4.0};
+                    s.casters.singleSided = back ? CasterFaces::Back : CasterFaces::Front;
                     renderer_.reset();
                     const Classification k = classify(render(scene, s), s, fromSide(), 0.3);
                     // Every combination still shadows the box's shadow, and every one with an
