@@ -23,10 +23,15 @@ void addBenchCommand(CLI::App& app);     // shadowlab bench SPEC.json|--quick --
 void addSettingsCommand(CLI::App& app);  // shadowlab settings: every setting and load limit
 void addSoakCommand(CLI::App& app);      // shadowlab soak [SCENE] --frames N
 
+// Prints "shadowlab COMMAND: MESSAGE" to stderr and throws CLI::RuntimeError(code).
+[[noreturn]] void failCommand(const char* command, const std::string& message, int code = 1);
+
 // `--limit KEY=N` (repeatable) on a command that loads a scene, and applying what it collected.
 void addLoadLimitOption(CLI::App& cmd, std::vector<std::string>& limits);
 bool applyLoadLimits(LoadOptions& options, const std::vector<std::string>& limits, std::string& error);
 // The viewer is the top-level command (`shadowlab [SCENE]`); it runs when no sub-command is given.
 void addViewerOptions(CLI::App& app);
+// main(): every sub-command and the viewer's options on one app, parsed; the process exit code.
+int runCommandLine(int argc, char** argv);
 
 }  // namespace shadowlab::app

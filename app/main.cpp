@@ -1,7 +1,5 @@
 #include "commands.h"
 
-#include <CLI/CLI.hpp>
-
 #if defined(__GLIBC__)
 #include <cstdlib>
 #include <malloc.h>
@@ -18,16 +16,5 @@ int main(int argc, char** argv) {
     // at 1 MiB every texture was mmapped: CPU 1.13x, wall 1.09x).
     if (!std::getenv("MALLOC_MMAP_THRESHOLD_")) mallopt(M_MMAP_THRESHOLD, 32 << 20);  // an explicit tuning wins
 #endif
-    CLI::App app{"shadowlab: real-time shadow mapping of large glTF scenes (SSM, PSM, LiSPSM)", "shadowlab"};
-    app.require_subcommand(0, 1);
-    shadowlab::app::addInfoCommand(app);
-    shadowlab::app::addRenderCommand(app);
-    shadowlab::app::addStressCommand(app);
-    shadowlab::app::addGenerateCommand(app);
-    shadowlab::app::addSettingsCommand(app);
-    shadowlab::app::addSoakCommand(app);
-    shadowlab::app::addBenchCommand(app);
-    shadowlab::app::addViewerOptions(app);
-    CLI11_PARSE(app, argc, argv);
-    return 0;
+    return shadowlab::app::runCommandLine(argc, argv);
 }

@@ -39,11 +39,6 @@ struct BenchOptions {
     bool noCharts = false;
 };
 
-[[noreturn]] void fail(const std::string& message, int code = 1) {
-    std::cerr << "shadowlab bench: " << message << "\n";
-    throw CLI::RuntimeError(code);
-}
-
 // "[=====     ] 5/12  forest / Camera_X  lispsm 2048  ETA 1m05s" on one terminal line.
 class Progress {
 public:
@@ -127,21 +122,21 @@ void poseAt(Scene& scene, double time, Renderer& renderer, std::unique_ptr<RaySc
     if (!rays) return;
     std::string error;
     rays = RayScene::build(scene, error);
-    if (!rays) fail(error);
+    if (!rays) failCommand("bench", error);
 }
 
 void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry, const Progress& progress,
               std::size_t& done, BenchResults& results) {
     const auto loadStart = Clock::now();
     std::optional<Scene> scene = loadSceneReporting(entry.file);
-    if (!scene) fail("cannot load '" + entry.file + "'");
+    if (!scene) failCommand("bench", "cannot load '" + entry.file + "'");
     BenchSceneInfo info{entry.file, scene->triangleCount(), secondsSince(loadStart), 0.0};
     renderer.setScene(*scene);
     std::unique_ptr<RayScene> rays;
     if (spec.groundTruth) {
         std::string error;
         rays = RayScene::build(*scene, error);
-        if (!rays) fail(error);
+        if (!rays) failCommand("bench", error);
         info.bvhSeconds = rays->buildSeconds();
     }
     results.scenes.push_back(info);
@@ -193,23 +188,23 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
 void runBench(const BenchOptions& options) {
     BenchSpec spec;
     std::string error;
-    if (options.quick == !options.spec.empty()) fail("give a SPEC.json or --quick (one of them)", 2);
+    if (options.quick == !options.spec.empty()) failCommand("bench", "give a SPEC.json or --quick (one of them)", 2);
     if (options.quick) {
         const std::string sponza = std::string(SHADOWLAB_SHARED_SCENES_DIR) + "/Sponza/Sponza.gltf";
         spec = quickBenchSpec(defaultScenePath(), SHADOWLAB_SHARED_SCENES_DIR[0] ? sponza : "");
     } else {
         std::string text;
-        if (!readTextFile(options.spec, text, error)) fail(error, 2);
+        if (!readTextFile(options.spec, text, error)) failCommand("bench", error, 2);
         const std::string folder = std::filesystem::path(options.spec).parent_path().string();
-        if (!parseBenchSpec(text, folder, spec, error)) fail(options.spec + ": " + error, 2);
+        if (!parseBenchSpec(text, folder, spec, error)) failCommand("bench", options.spec + ": " + error, 2);
     }
     const auto start = Clock::now();
     auto context = HeadlessContext::create(error);
-    if (!context) fail(error);
+    if (!context) failCommand("bench", error);
     gl::DebugLog debugLog;
     gl::installDebugOutput(debugLog);
     auto renderer = Renderer::create(error);
-    if (!renderer) fail(error);
+    if (!renderer) failCommand("bench", error);
 
     BenchResults results;
     results.device = context->description();
@@ -221,18 +216,18 @@ void runBench(const BenchOptions& options) {
     for (const BenchScene& scene : spec.scenes) runScene(*renderer, spec, scene, progress, done, results);
     progress.show(done, "done");
     results.totalSeconds = secondsSince(start);
-    if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while benchmarking");
+    if (debugLog.errorCount > 0) failCommand("bench", std::to_string(debugLog.errorCount) + " OpenGL error(s) while benchmarking");
 
     printTable(results, std::cout);
-    if (!writeResults(results, options.out, error)) fail(error);
+    if (!writeResults(results, options.out, error)) failCommand("bench", error);
     std::cout << "wrote " << (std::filesystem::path(options.out) / "results.json").string() << " and results.csv ("
               << results.totalSeconds << " s)\n";
     if (!options.noCharts) {
-        if (!drawCharts(options.out, error)) fail(error);
+        if (!drawCharts(options.out, error)) failCommand("bench", error);
         std::cout << "wrote charts to " << options.out << "\n";
     }
     for (const auto& [method, v] : results.canonical)
-        if (!v.passed) fail("canonical validation failed for " + method + " (see the table)");
+        if (!v.passed) failCommand("bench", "canonical validation failed for " + method + " (see the table)");
 }
 
 }  // namespace

@@ -47,11 +47,6 @@ struct RenderOptions {
     double diffScale = 4.0;
 };
 
-[[noreturn]] void fail(const std::string& message, int code = 1) {
-    std::cerr << "shadowlab render: " << message << "\n";
-    throw CLI::RuntimeError(code);
-}
-
 // Error against cost for one method: the frame time including the GPU's work (glFinish), the
 // texel footprint (thesis 8.2.1) over the lit-facing receivers, and with --truth the shadow
 // state against Embree rays (app/accuracy.h).
@@ -113,21 +108,21 @@ void writeStats(Renderer& renderer, const std::string& file) {
     renderer.resolveTimings();
     std::ofstream out(file);
     out << frameStatsJson(renderer.lastFrameStats()) << "\n";
-    if (!out) fail("cannot write " + file);
+    if (!out) failCommand("render", "cannot write " + file);
 }
 
 // Sizes are checked before anything is loaded or allocated: against the PNG writer's limit for the
 // whole (side by side) image here, against the GL implementation's once a context exists.
 void checkImageSize(const RenderOptions& options) {
     if (options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
-        fail("--width/--height must be between 16 and 16384", 2);
+        failCommand("render", "--width/--height must be between 16 and 16384", 2);
     const int views = options.overrides.method == "all" ? int(allMethodChoices().size()) : 1;
     std::string error;
     if (!pngWritable(options.width * views, options.height, error))
-        fail("--width " + std::to_string(options.width) + (views > 1 ? " x " + std::to_string(views) + " methods" : std::string()) + " by --height " +
+        failCommand("render", "--width " + std::to_string(options.width) + (views > 1 ? " x " + std::to_string(views) + " methods" : std::string()) + " by --height " +
                  std::to_string(options.height) + ": " + error, 2);
     if (options.measure && std::int64_t(options.width) * options.height > kMaxMeasuredPixels)
-        fail("--measure works up to 3840 x 2160 pixels (the float measurement targets take ~100 bytes per pixel)", 2);
+        failCommand("render", "--measure works up to 3840 x 2160 pixels (the float measurement targets take ~100 bytes per pixel)", 2);
 }
 
 void checkGlSize(const RenderOptions& options) {
@@ -137,7 +132,7 @@ void checkGlSize(const RenderOptions& options) {
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
     const int limit = std::min({maxTexture, maxRenderbuffer, maxViewport[0], maxViewport[1]});
     if (options.width > limit || options.height > limit)
-        fail("--width/--height beyond this OpenGL implementation's limit of " + std::to_string(limit) + " pixels", 2);
+        failCommand("render", "--width/--height beyond this OpenGL implementation's limit of " + std::to_string(limit) + " pixels", 2);
 }
 
 // A screenshot given as --view names its scene and the size it was rendered at: without SCENE the
@@ -148,19 +143,19 @@ void takeSceneAndSizeFromShot(RenderOptions& options) {
         options.overrides.viewFile.empty() ? std::nullopt : readShotOrigin(options.overrides.viewFile);
     if (options.scene.empty()) {
         if (!origin)
-            fail("no SCENE given, and " +
+            failCommand("render", "no SCENE given, and " +
                      (options.overrides.viewFile.empty() ? std::string("no --view")
                                                          : "--view " + options.overrides.viewFile) +
                      " names none (only screenshots shadowlab saves name their scene)",
                  2);
         const std::string file = shotSceneFile(*origin);
         if (file.empty())
-            fail(options.overrides.viewFile + " was taken in " + origin->scene + " (" + origin->sceneAbsolute +
+            failCommand("render", options.overrides.viewFile + " was taken in " + origin->scene + " (" + origin->sceneAbsolute +
                      "), which is not there; give the scene as SCENE",
                  2);
         const std::string hash = sceneFileHash(file);
         if (!origin->sceneHash.empty() && hash != origin->sceneHash)
-            fail(file + " is not the scene " + options.overrides.viewFile + " was taken in (content " + hash +
+            failCommand("render", file + " is not the scene " + options.overrides.viewFile + " was taken in (content " + hash +
                      ", the shot's " + origin->sceneHash + "); give SCENE explicitly to render it anyway",
                  2);
         options.scene = file;
@@ -177,23 +172,23 @@ void runRender(RenderOptions options) {
     checkImageSize(options);
     std::string error;
     LoadOptions load;
-    if (!applyLoadLimits(load, options.limits, error)) fail(error, 2);
-    if (!requestedScene(options.overrides, load, error)) fail(error);
+    if (!applyLoadLimits(load, options.limits, error)) failCommand("render", error, 2);
+    if (!requestedScene(options.overrides, load, error)) failCommand("render", error);
     std::optional<Scene> scene = loadSceneReporting(options.scene, load);
     if (!scene) throw CLI::RuntimeError(1);
     Settings settings = initialSettings(*scene);
-    if (!options.camera.empty() && !applySceneCamera(*scene, options.camera, settings, error)) fail(error);
-    if (!applyOverrides(settings, options.overrides, error)) fail(error);
+    if (!options.camera.empty() && !applySceneCamera(*scene, options.camera, settings, error)) failCommand("render", error);
+    if (!applyOverrides(settings, options.overrides, error)) failCommand("render", error);
     for (const std::string& notice : sceneNotices(settings, scene->lights.size()))
         std::cerr << "shadowlab render: note: " << notice << "\n";
 
     auto context = HeadlessContext::create(error);
-    if (!context) fail(error);
+    if (!context) failCommand("render", error);
     checkGlSize(options);
     gl::DebugLog debugLog;
     gl::installDebugOutput(debugLog);
     auto renderer = Renderer::create(error);
-    if (!renderer) fail(error);
+    if (!renderer) failCommand("render", error);
     // The view's time poses glTF animations exactly as the viewer showed them.
     animateScene(*scene, settings.animation.time);
     if (settings.display.groundPlane) addGroundPlane(*scene);
@@ -201,7 +196,7 @@ void runRender(RenderOptions options) {
     std::unique_ptr<RayScene> rays;
     if (options.truth) {
         rays = RayScene::build(*scene, error);
-        if (!rays) fail(error);
+        if (!rays) failCommand("render", error);
         std::cout << "ground truth: " << rays->triangleCount() << " triangles, BVH built in " << rays->buildSeconds()
                   << " s\n";
     }
@@ -209,8 +204,8 @@ void runRender(RenderOptions options) {
     if (!options.compare.empty()) {  // A/B compare of two view states (app/commands/render_compare.h)
         const CompareRequest request{options.compare[0], options.compare[1], options.width, options.height,
                                      options.diffScale, options.out};
-        if (!renderCompare(*renderer, *scene, settings, request, error)) fail(error);
-        if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
+        if (!renderCompare(*renderer, *scene, settings, request, error)) failCommand("render", error);
+        if (debugLog.errorCount > 0) failCommand("render", std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
         return;
     }
     // --method all: every method side by side, the cascades at the memory of the one map
@@ -266,9 +261,9 @@ void runRender(RenderOptions options) {
             }
         }
     }
-    if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
-    if (!writePng(image, options.out, error)) fail(error);
-    if (!options.mismatchOut.empty() && !writePng(mismatches, options.mismatchOut, error)) fail(error);
+    if (debugLog.errorCount > 0) failCommand("render", std::to_string(debugLog.errorCount) + " OpenGL error(s) while rendering");
+    if (!writePng(image, options.out, error)) failCommand("render", error);
+    if (!options.mismatchOut.empty() && !writePng(mismatches, options.mismatchOut, error)) failCommand("render", error);
     std::cout << "wrote " << options.out << " (" << image.width << "x" << image.height << ", " << context->description()
               << ")\n";
 }

@@ -43,11 +43,6 @@ struct SoakOptions {
     std::string csv;
 };
 
-[[noreturn]] void fail(const std::string& message, int code = 1) {
-    std::cerr << "shadowlab soak: " << message << "\n";
-    throw CLI::RuntimeError(code);
-}
-
 double residentMegabytes() {
     std::ifstream statm("/proc/self/statm");
     long pages = 0, resident = 0;
@@ -111,9 +106,9 @@ struct AfterWarmUp {
 
 void runSoak(const SoakOptions& options) {
     if (options.frames < 1 || options.switchEvery < 1 || options.sampleEvery < 1 || options.mapSizes.empty())
-        fail("--frames, --switch-every and --sample-every must be >= 1, --map-sizes not empty", 2);
+        failCommand("soak", "--frames, --switch-every and --sample-every must be >= 1, --map-sizes not empty", 2);
     if (options.width < 16 || options.height < 16 || options.width > 4096 || options.height > 4096)
-        fail("--width/--height must be between 16 and 4096", 2);
+        failCommand("soak", "--width/--height must be between 16 and 4096", 2);
     std::optional<Scene> scene = loadSceneReporting(options.scene.empty() ? defaultScenePath() : options.scene);
     if (!scene) throw CLI::RuntimeError(1);
     Settings settings = initialSettings(*scene);
@@ -123,7 +118,7 @@ void runSoak(const SoakOptions& options) {
     for (std::size_t i = 0; i < options.mapSizes.size(); ++i) {
         Settings probe = settings;
         probe.shadowMapSize = options.mapSizes[i];
-        if (!sanitize(probe).empty()) fail("--map-sizes: " + std::to_string(options.mapSizes[i]) + " is not a power of two in 256 .. 8192", 2);
+        if (!sanitize(probe).empty()) failCommand("soak", "--map-sizes: " + std::to_string(options.mapSizes[i]) + " is not a power of two in 256 .. 8192", 2);
     }
 
     // With rasterizer threads, llvmpipe ends a finished scene (dropping its references to textures)
@@ -136,11 +131,11 @@ void runSoak(const SoakOptions& options) {
     if (!options.driverThreads) setenv("LP_NUM_THREADS", "0", 0);
     std::string error;
     auto context = HeadlessContext::create(error);
-    if (!context) fail(error);
+    if (!context) failCommand("soak", error);
     gl::DebugLog debugLog;
     gl::installDebugOutput(debugLog);
     auto renderer = Renderer::create(error);
-    if (!renderer) fail(error);
+    if (!renderer) failCommand("soak", error);
     renderer->setScene(*scene);
     RenderTarget target(options.width, options.height);
     const Viewport viewport{target.framebuffer(), 0, 0, options.width, options.height};
@@ -150,7 +145,7 @@ void runSoak(const SoakOptions& options) {
     std::ofstream csv;
     if (!options.csv.empty()) {
         csv.open(options.csv);
-        if (!csv) fail("cannot write " + options.csv);
+        if (!csv) failCommand("soak", "cannot write " + options.csv);
         csv << "frame,rss_mb,heap_mb,gl_objects,gl_errors,method,map_size\n";
     }
     std::cout << "soak: " << options.frames << " frames of " << options.width << "x" << options.height << " on "
@@ -188,10 +183,10 @@ void runSoak(const SoakOptions& options) {
         }
         if (frame + 1 >= cycle) curve.add(frame, rss, heap, objects);
     }
-    if (curve.samples == 0) fail("--frames " + std::to_string(options.frames) + " ends inside the warm-up of " +
+    if (curve.samples == 0) failCommand("soak", "--frames " + std::to_string(options.frames) + " ends inside the warm-up of " +
                                  std::to_string(cycle) + " frames (methods x map sizes x --switch-every)", 2);
     if (curve.firstCyclePeak == 0.0 || curve.laterPeak == 0.0)
-        fail("--frames " + std::to_string(options.frames) + " ends inside the first measured cycle: needs more than " +
+        failCommand("soak", "--frames " + std::to_string(options.frames) + " ends inside the first measured cycle: needs more than " +
              std::to_string(2 * cycle) + " frames to compare cycles", 2);
     const double growth = (curve.laterPeak - curve.firstCyclePeak) / curve.firstCyclePeak;
     std::printf("resident memory after warm-up: %.1f MB at warm-up, %.1f .. %.1f MB; peak of the first measured "

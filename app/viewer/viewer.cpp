@@ -22,6 +22,7 @@
 #include "viewer/ground_probe.h"
 #include "viewer/viewer_frame.h"
 #include "viewer/viewer_open.h"
+#include "viewer/viewer_options.h"
 #include "widgets.h"
 #include "viewer/viewer_window.h"
 
@@ -29,7 +30,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
-#include <CLI/CLI.hpp>
+#include <CLI/Error.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -43,19 +44,6 @@
 namespace shadowlab::app {
 
 namespace {
-
-struct ViewerOptions {
-    std::string scene;
-    int frames = 0;          // 0 = run until closed
-    std::string screenshot;  // written after the last frame
-    std::string saveView;    // view state JSON written on exit
-    bool noUi = false;       // start with the panels hidden (F1 toggles)
-    int width = 1280, height = 720;
-    SettingsOverrides overrides;
-    std::vector<std::string> limits;   // --limit KEY=N load budgets
-    std::string abView;                // --ab A.json: start in A/B compare with A from this view state
-    std::string abMode = "side";       // --ab-mode side|wipe|diff
-};
 
 // Frames drawn after the last event or setting change before the window goes idle: ImGui settles
 // its layout in one or two frames, and the GPU timings of a change are read a few frames late
@@ -312,6 +300,8 @@ bool animating(const ViewerState& state) {
     return !state.scene->animations.empty() || (s.light.animateSun && s.light.source == LightSource::Sun);
 }
 
+}  // namespace
+
 void runViewer(const ViewerOptions& options) {
     const std::string sceneFile = options.scene.empty() ? defaultScenePath() : options.scene;
     std::string error;
@@ -527,31 +517,6 @@ void runViewer(const ViewerOptions& options) {
         std::cerr << "shadowlab: " << debugLog.errorCount << " OpenGL error(s)\n";
         throw CLI::RuntimeError(2);
     }
-}
-
-}  // namespace
-
-void addViewerOptions(CLI::App& app) {
-    auto options = std::make_shared<ViewerOptions>();
-    app.add_option("scene", options->scene, "glTF scene to open (.gltf/.glb); default: the generated forest");
-    app.add_option("--frames", options->frames, "run this many frames of the scene, then exit (0 = until closed)");
-    app.add_option("--screenshot", options->screenshot, "save the last frame (with panels) to this PNG");
-    app.add_option("--save-view", options->saveView, "write the view state JSON (what --view reads) on exit");
-    app.add_flag("--no-ui", options->noUi, "start with the panels hidden (F1 toggles them)");
-    app.add_option("--width", options->width, "window width")->capture_default_str();
-    app.add_option("--height", options->height, "window height")->capture_default_str();
-    app.add_option("--view", options->overrides.viewFile, "view state JSON (camera, light, all settings)");
-    app.add_option("--method", options->overrides.method, std::string("one of ") + methodChoiceNames() + " (csm keeps csm.perSplit)");
-    app.add_option("--set", options->overrides.sets, "a setting as key=value (repeatable)");
-    addLoadLimitOption(app, options->limits);
-    app.add_option("--ab", options->abView,
-                   "start in A/B compare: A = these view-state settings (JSON or screenshot), B = the current ones");
-    app.add_option("--ab-mode", options->abMode, "A/B compare shown as side (A | B), wipe or diff")
-        ->capture_default_str();
-    // Runs when no sub-command was given.
-    app.callback([&app, options] {
-        if (app.get_subcommands().empty()) runViewer(*options);
-    });
 }
 
 }  // namespace shadowlab::app

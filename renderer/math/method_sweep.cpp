@@ -1,3 +1,4 @@
+#include "shadow_internal.h"
 #include "math/method_sweep.h"
 
 #include "math/random.h"
@@ -14,7 +15,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 double rad(double deg) { return deg * kPi / 180.0; }
 
 glm::dvec3 fromAngles(double yaw, double pitch) {

@@ -1,4 +1,5 @@
 #include "math/stress.h"
+#include "shadow_internal.h"
 
 #include "math/random.h"
 
@@ -13,7 +14,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 // A fallback's kind: its message with the figures in it (e.g. PSM's guard ratio) as '#', so the
 // report counts kinds, not values.

@@ -6,6 +6,7 @@
 #include "math/cascades.h"
 #include "math/lispsm_search.h"
 
+#include <numbers>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,14 +16,13 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kHalfWidth = 12.0, kWallHeight = 20.0, kLength = 1000.0;
 
 ViewFrustum streetView() {
     ViewFrustum v;
     v.eye = {0.0, 1.7, 0.0};
     v.forward = glm::normalize(glm::dvec3(0.0, -0.15, -1.0));
-    v.fovY = 60.0 * kPi / 180.0;
+    v.fovY = 60.0 * std::numbers::pi / 180.0;
     v.aspect = 16.0 / 9.0;
     v.zNear = 0.1;
     v.zFar = 1200.0;

@@ -4,6 +4,7 @@
 
 #include "math/random.h"
 
+#include <numbers>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +12,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const SplitParameterization kAllPerSplit[] = {SplitParameterization::Ssm, SplitParameterization::StableSsm,
                                               SplitParameterization::Lispsm};
 
@@ -26,7 +26,7 @@ ViewFrustum groundView(glm::dvec3 eye = {0, 2, 50}, glm::dvec3 forward = {0, -0.
     ViewFrustum v;
     v.eye = eye;
     v.forward = glm::normalize(forward);
-    v.fovY = 60.0 * kPi / 180.0;
+    v.fovY = 60.0 * std::numbers::pi / 180.0;
     v.aspect = 1.5;
     v.zNear = 0.5;
     v.zFar = 120.0;
@@ -220,7 +220,7 @@ TEST(CascadeStress, EverySplitMatrixContainsItsBodyOnRandomViews) {
         ViewFrustum view;
         view.eye = offset + glm::dvec3(rng.uniform(-1, 1) * half.x, rng.uniform(0, 1.5) * half.y, rng.uniform(-1, 1) * half.z);
         view.forward = glm::normalize(glm::dvec3(rng.uniform(-1, 1), rng.uniform(-0.8, 0.2), rng.uniform(-1, 1)));
-        view.fovY = rng.uniform(10.0, 120.0) * kPi / 180.0;
+        view.fovY = rng.uniform(10.0, 120.0) * std::numbers::pi / 180.0;
         view.aspect = rng.uniform(0.5, 2.5);
         view.zNear = rng.logUniform(1e-3, 1.0);
         view.zFar = view.zNear * rng.logUniform(10.0, 1e5);

@@ -2,7 +2,7 @@
 # wrote a non-trivial screenshot.
 file(REMOVE ${OUT})
 execute_process(
-  COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x720x24" ${SHADOWLAB} --frames 5 --width 640 --height 360 --screenshot ${OUT}
+  COMMAND ${XVFB_RUN} -n ${FIRST_DISPLAY} -a -s "-screen 0 1280x720x24" ${SHADOWLAB} --frames 5 --width 640 --height 360 --screenshot ${OUT}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT rc EQUAL 0)

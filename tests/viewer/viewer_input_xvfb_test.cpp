@@ -64,7 +64,7 @@ Settings drive(const std::string& name, const std::string& view, const std::stri
                               " --width 960 --height 540 --view " + quoted(viewFile) + " --save-view " +
                               quoted(saved) + " " + viewerArgs + " & pid=$!; " + quoted(X11_SEND_INPUT) +
                               " plane-box.glb sleep:400 " + steps + " close; wait $pid";
-    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' sh -c \"" + inner +
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' sh -c \"" + inner +
                             "\" > " + quoted(log) + " 2>&1";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd << "\n" << readFile(log);
     Settings settings;
@@ -118,7 +118,7 @@ TEST(ViewerInputUnderXvfb, ABadSceneOnTheCommandLineOpensTheDefaultSceneWithTheE
     const fs::path bad = dir / "not-a-scene.glb", shot = dir / "bad-scene.png", log = dir / "bad-scene.log";
     std::ofstream(bad) << "glTF but not really";
     fs::remove(shot);
-    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
                             " " + quoted(bad) + " --frames 2 --width 320 --height 200 --no-ui --screenshot " +
                             quoted(shot) + " > " + quoted(log) + " 2>&1";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << readFile(log);  // the window opened instead of exiting
@@ -216,7 +216,7 @@ TEST(ViewerInputUnderXvfb, AbDifferenceOfIdenticalSettingsIsBlackAndRenderCompar
     const fs::path view = dir / "ab-same.json", shot = dir / "ab-diff.png", log = dir / "ab.log";
     std::ofstream(view) << R"({"method": "psm", "animation": {"playing": false, "time": 0.0}})";
     fs::remove(shot);
-    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
                             " " + quoted(PLANE_BOX_SCENE) + " --view " + quoted(view) + " --ab " + quoted(view) +
                             " --ab-mode diff --frames 2 --width 400 --height 240 --no-ui --screenshot " +
                             quoted(shot) + " > " + quoted(log) + " 2>&1";
@@ -292,13 +292,13 @@ TEST(ViewerInputUnderXvfb, LimitsAndSceneNoticesReachTheViewer) {
     EXPECT_NE(std::system(bad.c_str()), 0);
     EXPECT_NE(readFile(log).find("unknown load limit 'bogus'"), std::string::npos) << readFile(log);
     // A limit the scene is over: refused with the limit's name, the window stays open.
-    const std::string over = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+    const std::string over = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
                              " " + quoted(PLANE_BOX_SCENE) + " --limit vertices=3 --frames 2 --width 320 --height 200" +
                              " --no-ui --screenshot " + quoted(shot) + " > " + quoted(log) + " 2>&1";
     EXPECT_EQ(std::system(over.c_str()), 0) << readFile(log);
     EXPECT_NE(readFile(log).find("vertices"), std::string::npos) << readFile(log);
     // sceneNotices: a scene light beyond the scene's lights is told, as `render` tells it.
-    const std::string notice = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+    const std::string notice = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
                                " " + quoted(PLANE_BOX_SCENE) + " --set light.source=scene --set light.sceneLight=5" +
                                " --frames 2 --width 320 --height 200 --no-ui > " + quoted(log) + " 2>&1";
     EXPECT_EQ(std::system(notice.c_str()), 0) << readFile(log);
@@ -316,7 +316,7 @@ TEST(ViewerInputUnderXvfb, WithCascadesTheShadowMapInsetShowsEveryLayerInItsSpli
         "animation": {"playing": false, "time": 0.0},
         "overlays": {"shadowMapInset": true, "lightViewInset": false, "observerInset": true}})";
     fs::remove(shot);
-    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
                             " " + quoted(PLANE_BOX_SCENE) + " --view " + quoted(view) +
                             " --frames 3 --width 960 --height 540 --no-ui --screenshot " + quoted(shot) + " > " +
                             quoted(log) + " 2>&1";

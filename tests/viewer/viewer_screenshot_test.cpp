@@ -77,7 +77,7 @@ const ViewerRun& runViewer(const std::string& name, const std::string& view, con
     const fs::path log = workDir() / (name + ".log");
     writeFile(viewFile, view);
     fs::remove(shot);
-    const std::string cmd = std::string(XVFB_RUN_EXE) + " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
+    const std::string cmd = std::string(XVFB_RUN_EXE) + " -n " XVFB_FIRST_DISPLAY " -a -s '-screen 0 1280x720x24' " + quoted(SHADOWLAB_EXE) +
                             " " + quoted(fs::path(scene)) + " --frames 4 --width " + std::to_string(width) +
                             " --height " + std::to_string(height) + " --view " + quoted(viewFile) + " --screenshot " +
                             quoted(shot) + " " + extraArgs + " > " + quoted(log) + " 2>&1";
