@@ -4,7 +4,7 @@
 #include "image/png_text.h"
 #include "scenes/gltf_loader.h"
 #include "settings/method_choice.h"
-#include "viewer/ground_probe.h"
+#include "ground_probe.h"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #include "viewer/camera_controller.h"
 
 #include "frame/frame_setup.h"
-#include "viewer/ground_probe.h"
+#include "ground_probe.h"
 
 #include <algorithm>
 #include <cmath>

@@ -21,7 +21,7 @@ public:
     // bounds (a point in front of the camera let small models swing out of view).
     glm::dvec3 pivot{0.0};
     // Walk mode: with a scene, the eye stays walkEyeHeight above the ground under it
-    // (viewer/ground_probe.h) and W/S move along the ground; E/Q do nothing.
+    // (ground_probe.h) and W/S move along the ground; E/Q do nothing.
     const GroundProbe* walkOn = nullptr;
     double walkEyeHeight = 1.7;
     void apply(CameraSettings& camera, const CameraInput& input) const;

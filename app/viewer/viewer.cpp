@@ -19,7 +19,7 @@
 #include "screen_overlays.h"
 #include "scenes/animation.h"
 #include "settings/method_choice.h"
-#include "viewer/ground_probe.h"
+#include "ground_probe.h"
 #include "viewer/viewer_frame.h"
 #include "viewer/viewer_open.h"
 #include "viewer/viewer_options.h"

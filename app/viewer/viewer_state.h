@@ -2,7 +2,7 @@
 // Everything the viewer's loop owns besides the GL objects and the window (app/viewer/viewer.cpp), shared
 // with the open/load handling (app/viewer/viewer_open.h).
 #include "viewer/camera_controller.h"
-#include "viewer/ground_probe.h"
+#include "ground_probe.h"
 #include "file_panel.h"
 #include "frame/ground_plane.h"
 #include "panels.h"

@@ -15,14 +15,14 @@ namespace {
 const SplitParameterization kAllPerSplit[] = {SplitParameterization::Ssm, SplitParameterization::StableSsm,
                                               SplitParameterization::Lispsm};
 
-Aabb terrain() {
+Aabb cascadeTerrain() {
     Aabb b;
     b.min = {-100, 0, -100};
     b.max = {100, 30, 100};
     return b;
 }
 
-ViewFrustum groundView(glm::dvec3 eye = {0, 2, 50}, glm::dvec3 forward = {0, -0.1, -1}) {
+ViewFrustum cascadeView(glm::dvec3 eye = {0, 2, 50}, glm::dvec3 forward = {0, -0.1, -1}) {
     ViewFrustum v;
     v.eye = eye;
     v.forward = glm::normalize(forward);
@@ -124,7 +124,7 @@ TEST(CascadeSplits, BadParamsGiveAMessageAndNoSplits) {
     EXPECT_NE(validateCascadeParams(p).find("increasing"), std::string::npos);
     p.manualSplits = {0.2, std::nan("")};
     EXPECT_FALSE(validateCascadeParams(p).empty());
-    const CascadeSetup s = computeCascadeSetup(groundView(), sun({1, -1, 0}), terrain(), p);
+    const CascadeSetup s = computeCascadeSetup(cascadeView(), sun({1, -1, 0}), cascadeTerrain(), p);
     EXPECT_FALSE(s.error.empty());
     EXPECT_TRUE(s.splits.empty());
     p.manualSplits = {0.2, 0.5};
@@ -138,16 +138,16 @@ TEST(CascadeSetups, EachSplitsBodyHoldsItsVisiblePartAndMapsIntoTheClipCube) {
     const glm::dvec3 lights[] = {{0.3, -1, 0.2}, {-1, -0.05, 0.1}, {0, -1, 0}, {0, -0.2, -1}, {0, -0.2, 1}};
     for (const auto& dir : lights)
         for (SplitParameterization per : kAllPerSplit) {
-            const ViewFrustum view = groundView();
+            const ViewFrustum view = cascadeView();
             const ShadowLight light = sun(dir);
-            const CascadeSetup cs = computeCascadeSetup(view, light, terrain(), cascade(per));
+            const CascadeSetup cs = computeCascadeSetup(view, light, cascadeTerrain(), cascade(per));
             ASSERT_TRUE(cs.error.empty()) << cs.error;
             ASSERT_EQ(cs.splits.size(), 4u);
             for (const CascadeSplit& split : cs.splits) {
                 SCOPED_TRACE(std::string(splitParameterizationName(per)) + " split near " +
                              std::to_string(split.zNear));
                 ConvexBody visible;
-                intersectionBody(splitFrustum(view, split.zNear, split.zFar), light, terrain(), &visible);
+                intersectionBody(splitFrustum(view, split.zNear, split.zFar), light, cascadeTerrain(), &visible);
                 ASSERT_TRUE(split.setup.valid);
                 const ConvexBody B(split.setup.diagnostics.bodyB);
                 for (const auto& p : B.vertices()) expectInClipCube(split.setup.worldToShadowClip, p, "vertex of B_i");
@@ -165,10 +165,10 @@ TEST(CascadeSetups, EachSplitsBodyHoldsItsVisiblePartAndMapsIntoTheClipCube) {
 
 TEST(CascadeSetups, ContainmentHoldsFarFromTheOrigin) {
     const glm::dvec3 offset{1e5, 0, -1e5};
-    Aabb scene = terrain();
+    Aabb scene = cascadeTerrain();
     scene.min += offset;
     scene.max += offset;
-    const ViewFrustum view = groundView(glm::dvec3(0, 2, 50) + offset);
+    const ViewFrustum view = cascadeView(glm::dvec3(0, 2, 50) + offset);
     for (SplitParameterization per : kAllPerSplit) {
         const CascadeSetup cs = computeCascadeSetup(view, sun({0.4, -1, 0.3}), scene, cascade(per));
         for (const CascadeSplit& split : cs.splits) {
@@ -180,12 +180,12 @@ TEST(CascadeSetups, ContainmentHoldsFarFromTheOrigin) {
 }
 
 TEST(CascadeSetups, OneSsmSplitIsTheSingleFocusedMap) {
-    const ViewFrustum view = groundView();
+    const ViewFrustum view = cascadeView();
     const ShadowLight light = sun({0.3, -1, 0.2});
-    const CascadeSetup cs = computeCascadeSetup(view, light, terrain(), cascade(SplitParameterization::Ssm, 1));
+    const CascadeSetup cs = computeCascadeSetup(view, light, cascadeTerrain(), cascade(SplitParameterization::Ssm, 1));
     ShadowParams p;
     p.method = ShadowMethod::SsmFocused;
-    const ShadowSetup single = computeShadowSetup(view, light, terrain(), p);
+    const ShadowSetup single = computeShadowSetup(view, light, cascadeTerrain(), p);
     ASSERT_EQ(cs.splits.size(), 1u);
     EXPECT_EQ(cs.splits[0].setup.worldToShadowClip, single.worldToShadowClip);
 }
@@ -193,10 +193,10 @@ TEST(CascadeSetups, OneSsmSplitIsTheSingleFocusedMap) {
 TEST(CascadeSetups, LaterSplitsHaveLargerTexels) {
     // Splitting's point: the near split's texels are much smaller than one map's over the view.
     const CascadeSetup cs =
-        computeCascadeSetup(groundView(), sun({0.3, -1, 0.2}), terrain(), cascade(SplitParameterization::Ssm));
+        computeCascadeSetup(cascadeView(), sun({0.3, -1, 0.2}), cascadeTerrain(), cascade(SplitParameterization::Ssm));
     ShadowParams p;
     p.method = ShadowMethod::SsmFocused;
-    const ShadowSetup single = computeShadowSetup(groundView(), sun({0.3, -1, 0.2}), terrain(), p);
+    const ShadowSetup single = computeShadowSetup(cascadeView(), sun({0.3, -1, 0.2}), cascadeTerrain(), p);
     const double singleTexel = texelWorldSizeAt(single.worldToShadowClip, {0, 0, 0}, 2048);
     EXPECT_LT(cs.splits[0].texelWorldSize * 2.0, singleTexel) << "4 x 1024^2 against 2048^2: equal memory";
     for (int i = 1; i < 4; ++i) EXPECT_GT(cs.splits[i].texelWorldSize, cs.splits[i - 1].texelWorldSize);
@@ -262,14 +262,14 @@ TEST(CascadeStress, EverySplitMatrixContainsItsBodyOnRandomViews) {
 // --- The visible depth range and the measured receivers (depth pre-pass) ---------------------
 
 TEST(CascadeVisibleRange, SplitsCoverTheVisibleRangeAndTheFirstStartsAtTheNearPlane) {
-    const ViewFrustum view = groundView();  // near 0.5, far 120
+    const ViewFrustum view = cascadeView();  // near 0.5, far 120
     CascadeParams p = cascade(SplitParameterization::Ssm);
     p.visibleNear = 2.0;
     p.visibleFar = 40.0;
     const CascadeDepthRange r = cascadeDepthRange(view, p);
     EXPECT_EQ(r.zNear, 2.0);
     EXPECT_EQ(r.zFar, 40.0);
-    const CascadeSetup cs = computeCascadeSetup(view, sun({0.3, -1, 0.2}), terrain(), p);
+    const CascadeSetup cs = computeCascadeSetup(view, sun({0.3, -1, 0.2}), cascadeTerrain(), p);
     ASSERT_EQ(cs.splits.size(), 4u);
     const auto z = practicalSplitDepths(2.0, 40.0, 4, 0.5);
     EXPECT_EQ(cs.splits[0].zNear, view.zNear) << "geometry nearer than the measured range still has a map";
@@ -289,7 +289,7 @@ TEST(CascadeVisibleRange, SplitsCoverTheVisibleRangeAndTheFirstStartsAtTheNearPl
 }
 
 TEST(CascadeVisibleRange, StableSplitsKeepTheNearPlaneAndSnapTheFarEndOutwards) {
-    const ViewFrustum view = groundView();
+    const ViewFrustum view = cascadeView();
     CascadeParams p = cascade(SplitParameterization::StableSsm);
     int changes = 0;
     CascadeDepthRange last{};
@@ -317,7 +317,7 @@ TEST(CascadeVisibleRange, StableSplitsKeepTheNearPlaneAndSnapTheFarEndOutwards) 
 }
 
 TEST(CascadeVisibleRange, EachLispsmSplitSearchesOnlyTheReceiversOfItsRange) {
-    const ViewFrustum view = groundView();
+    const ViewFrustum view = cascadeView();
     const ShadowLight light = sun({0.3, -1, 0.2});
     CascadeParams p = cascade(SplitParameterization::Lispsm);
     p.visibleNear = 2.0;
@@ -327,7 +327,7 @@ TEST(CascadeVisibleRange, EachLispsmSplitSearchesOnlyTheReceiversOfItsRange) {
         const glm::dvec3 ahead = view.eye + view.forward * z;
         p.base.receiverPoints.push_back({{ahead.x, 0.0, ahead.z}, {0, 1, 0}});
     }
-    const CascadeSetup cs = computeCascadeSetup(view, light, terrain(), p);
+    const CascadeSetup cs = computeCascadeSetup(view, light, cascadeTerrain(), p);
     ASSERT_EQ(cs.splits.size(), 4u);
     std::size_t total = 0;
     for (std::size_t i = 0; i < cs.splits.size(); ++i) {
@@ -348,13 +348,13 @@ TEST(StableSsm, DepthRowStaysPutUnderSmallCameraMoves) {
     // The depth range is snapped to whole steps of the bound: 1 cm camera steps leave the whole
     // matrix unchanged in nearly every frame (fitted every frame, it changed in every one).
     const ShadowLight light = sun({0.35, -1, 0.25});
-    const ViewFrustum reference = groundView();
-    CascadeSetup last = computeCascadeSetup(reference, light, terrain(), cascade(SplitParameterization::StableSsm));
+    const ViewFrustum reference = cascadeView();
+    CascadeSetup last = computeCascadeSetup(reference, light, cascadeTerrain(), cascade(SplitParameterization::StableSsm));
     int changed = 0, compared = 0;
     for (int step = 1; step <= 50; ++step) {
         ViewFrustum moved = reference;
         moved.eye.x += 0.01 * step;
-        const CascadeSetup cs = computeCascadeSetup(moved, light, terrain(), cascade(SplitParameterization::StableSsm));
+        const CascadeSetup cs = computeCascadeSetup(moved, light, cascadeTerrain(), cascade(SplitParameterization::StableSsm));
         for (int i = 0; i < 4; ++i) {
             ++compared;
             const glm::dmat4& a = cs.splits[i].setup.worldToShadowClip;
@@ -393,8 +393,8 @@ double distanceToWholeNumber(double t) { return std::abs(t - std::round(t)); }
 TEST(StableSsm, TexelGridStaysFixedUnderCameraTranslationAndRotation) {
     const ShadowLight light = sun({0.35, -1, 0.25});
     const int res = 1024;
-    const ViewFrustum reference = groundView();
-    const CascadeSetup ref = computeCascadeSetup(reference, light, terrain(), cascade(SplitParameterization::StableSsm));
+    const ViewFrustum reference = cascadeView();
+    const CascadeSetup ref = computeCascadeSetup(reference, light, cascadeTerrain(), cascade(SplitParameterization::StableSsm));
     const glm::dvec3 probes[] = {{0, 0, 0}, {13.7, 1.2, -20.3}, {-40.1, 5.5, 3.3}};
     Rng rng(99);
     int compared = 0;
@@ -405,7 +405,7 @@ TEST(StableSsm, TexelGridStaysFixedUnderCameraTranslationAndRotation) {
             const glm::dvec3 u = rng.unit();
             moved.forward = glm::normalize(glm::dvec3(u.x, -0.1 - 0.3 * std::abs(u.y), u.z));
         }
-        const CascadeSetup cs = computeCascadeSetup(moved, light, terrain(), cascade(SplitParameterization::StableSsm));
+        const CascadeSetup cs = computeCascadeSetup(moved, light, cascadeTerrain(), cascade(SplitParameterization::StableSsm));
         for (int i = 0; i < 4; ++i) {
             if (!cs.splits[i].setup.valid) continue;  // a split that sees nothing of the scene
             ++compared;
@@ -427,11 +427,11 @@ TEST(StableSsm, TexelGridStaysFixedUnderCameraTranslationAndRotation) {
 TEST(StableSsm, FocusedSsmGridDoesMoveUnderTranslation) {
     // The control: without the stable fit the grid crawls, so the test above can fail.
     const ShadowLight light = sun({0.35, -1, 0.25});
-    const ViewFrustum a = groundView();
+    const ViewFrustum a = cascadeView();
     ViewFrustum b = a;
     b.eye += glm::dvec3(0.37, 0.0, -0.11);
-    const CascadeSetup sa = computeCascadeSetup(a, light, terrain(), cascade(SplitParameterization::Ssm));
-    const CascadeSetup sb = computeCascadeSetup(b, light, terrain(), cascade(SplitParameterization::Ssm));
+    const CascadeSetup sa = computeCascadeSetup(a, light, cascadeTerrain(), cascade(SplitParameterization::Ssm));
+    const CascadeSetup sb = computeCascadeSetup(b, light, cascadeTerrain(), cascade(SplitParameterization::Ssm));
     const glm::dvec2 d = texelCoordinate(sb.splits[1].setup.worldToShadowClip, {0, 0, 0}, 1024) -
                          texelCoordinate(sa.splits[1].setup.worldToShadowClip, {0, 0, 0}, 1024);
     EXPECT_GT(std::max(distanceToWholeNumber(d.x), distanceToWholeNumber(d.y)), 1e-3);
@@ -444,7 +444,7 @@ TEST(StableSsm, SpotLightFallsBackToFocusedSsmAndSaysSo) {
     spot.direction = {0, -1, -0.3};
     spot.outerConeAngle = 0.6;
     ShadowParams p;
-    const ShadowSetup s = computeStableSsmSetup(groundView(), spot, terrain(), p, 1024);
+    const ShadowSetup s = computeStableSsmSetup(cascadeView(), spot, cascadeTerrain(), p, 1024);
     ASSERT_TRUE(s.valid);
     EXPECT_NE(s.diagnostics.fallback.find("directional"), std::string::npos);
     for (const auto& v : ConvexBody(s.diagnostics.bodyB).vertices()) expectInClipCube(s.worldToShadowClip, v, "spot");

@@ -1,6 +1,7 @@
 // The loader over the real Khronos sample models and Sponza in ../shared/scenes: counts, bounds
 // and values are what the files contain (measured independently from the JSON and .bin).
 #include "scenes/gltf_loader.h"
+#include "shared_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -12,19 +13,14 @@
 namespace shadowlab {
 namespace {
 
-const std::string kScenes = SHADOWLAB_SHARED_SCENES;
+using scene_test::expectVec;
+using scene_test::kScenes;
 
 Scene load(const std::string& relative) {
     LoadResult r = loadScene(kScenes + "/" + relative);
     EXPECT_TRUE(r.ok()) << r.error;
     EXPECT_TRUE(r.error.empty());
     return r.ok() ? std::move(*r.scene) : Scene{};
-}
-
-void expectVec(const glm::dvec3& actual, const glm::dvec3& expected, double tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
 std::size_t primitiveCount(const Scene& s) {

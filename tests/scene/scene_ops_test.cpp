@@ -1,6 +1,7 @@
 // Scene-model operations without files: world transforms, instances, bounds, default light and
 // camera, and the text of `shadowlab info` (describeScene).
 #include "scenes/gltf_loader.h"
+#include "shared_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,8 @@
 namespace shadowlab {
 namespace {
 
-const std::string kScenes = SHADOWLAB_SHARED_SCENES;
+using scene_test::expectVec;
+using scene_test::kScenes;
 
 Primitive unitCube() {
     Primitive p;
@@ -36,12 +38,6 @@ Scene sceneWith(Primitive p) {
     Scene s;
     s.meshes.push_back(Mesh{"m", {std::move(p)}});
     return s;
-}
-
-void expectVec(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
-    EXPECT_NEAR(a.x, b.x, tolerance);
-    EXPECT_NEAR(a.y, b.y, tolerance);
-    EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
 TEST(WorldTransforms, ChildComposesWithItsParent) {

@@ -19,10 +19,10 @@ namespace {
 using namespace testing_files;
 namespace fs = std::filesystem;
 
-const fs::path kScenes = SHADOWLAB_SHARED_SCENES;
+const fs::path kSharedScenes = SHADOWLAB_SHARED_SCENES;
 
 Scene loadShared(const std::string& relative) {
-    const fs::path file = kScenes / relative;
+    const fs::path file = kSharedScenes / relative;
     if (!fs::exists(file)) return Scene{};
     LoadResult r = loadScene(file);
     EXPECT_TRUE(r.ok()) << r.error;
@@ -167,8 +167,8 @@ TEST(Skinning, SamplesOpenWithoutIgnoredWarningsAndBoundsHoldThePose) {
                              "SimpleSkin/glTF/SimpleSkin.gltf", "AnimatedMorphCube/glTF-Binary/AnimatedMorphCube.glb",
                              "SimpleMorph/glTF/SimpleMorph.gltf"}) {
         SCOPED_TRACE(file);
-        if (!fs::exists(kScenes / file)) GTEST_SKIP() << "shared scenes missing";
-        LoadResult r = loadScene(kScenes / file);
+        if (!fs::exists(kSharedScenes / file)) GTEST_SKIP() << "shared scenes missing";
+        LoadResult r = loadScene(kSharedScenes / file);
         ASSERT_TRUE(r.ok()) << r.error;
         for (const std::string& w : r.warnings) EXPECT_EQ(w.find("ignored"), std::string::npos) << w;
         Scene& s = *r.scene;

@@ -1,9 +1,9 @@
 // Walk mode and the default fly speed on the generated forest's hills (GL-free): the ground under
-// the eye comes from a ray down into the scene (app/viewer/ground_probe.h).
+// the eye comes from a ray down into the scene (app/ground_probe.h).
 #include "frame/frame_setup.h"
 #include "scenes/gltf_loader.h"
 #include "viewer/camera_controller.h"
-#include "viewer/ground_probe.h"
+#include "ground_probe.h"
 
 #include <gtest/gtest.h>
 

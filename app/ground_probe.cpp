@@ -1,4 +1,4 @@
-#include "viewer/ground_probe.h"
+#include "ground_probe.h"
 
 #include "math/ray_box.h"
 
