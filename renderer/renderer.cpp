@@ -81,10 +81,15 @@ std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     return r;
 }
 
-void Renderer::setScene(const Scene& scene, bool streamTextures) {
-    gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures);
-    culler_.setScene(scene);
+void Renderer::setScene(const Scene& scene, bool streamTextures, LoadTimings* timings) {
+    gpuScene_.reset();  // the old scene's buffers go before the new ones are made
+    gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures, timings);
+    {
+        StepTimer building(timings ? &timings->bvhMs : nullptr);
+        culler_.setScene(scene);
+    }
     scene_ = &scene;
+    StepTimer modelling(timings ? &timings->casterModelMs : nullptr);
     backdrops_ = detectBackdrops(scene);
     ++sceneLoads_;
     ++sceneVersion_;

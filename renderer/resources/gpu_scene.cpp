@@ -81,7 +81,9 @@ bool GpuScene::uploadPendingTextures(const Scene& scene, double budgetMs) {
     return true;
 }
 
-GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
+GpuScene::GpuScene(const Scene& scene, bool deferTextures, LoadTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
+    double clustersMs = 0.0;
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     meshes_.resize(scene.meshes.size());
@@ -100,6 +102,7 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
             // Large primitives go in cluster order, each cluster a contiguous index range. Skinned
             // and morphed meshes stay whole: cluster bounds are of the bind pose, which the pose leaves.
             const bool deformed = scene.meshes[m].skinned() || scene.meshes[m].morphed();
+            StepTimer splitting(&clustersMs);
             addClusters(gp, clusterTriangles(p.positions, p.indices, indices, kClusterTriangles,
                                              deformed ? SIZE_MAX : kMinClusteredTriangles));
             meshes_[m].primitives.push_back(gp);
@@ -107,6 +110,7 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
         // A mesh is drawn by clusters when a primitive of it is: its small ones become one cluster.
         GpuMesh& mesh = meshes_[m];
         auto hasClusters = [](const GpuPrimitive& gp) { return gp.clusters >= 0; };
+        StepTimer splitting(&clustersMs);
         if (std::any_of(mesh.primitives.begin(), mesh.primitives.end(), hasClusters))
             for (std::size_t k = 0; k < mesh.primitives.size(); ++k)
                 if (mesh.primitives[k].clusters < 0)
@@ -184,6 +188,12 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
         samplers_.push_back(std::move(sampler));
     }
     uploadMaterials(scene);
+    if (!timings) return;
+    // llvmpipe copies buffer and texture data when it is specified; glFinish makes a GPU's
+    // transfers count too.
+    glFinish();
+    timings->clustersMs += clustersMs;
+    timings->uploadMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() - clustersMs;
 }
 
 void GpuScene::addClusters(GpuPrimitive& primitive, ClusteredPrimitive clustered) {
