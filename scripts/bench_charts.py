@@ -119,7 +119,8 @@ def scaling(rows, out):
     panels = (("triangles per pass", (("forward_triangles", "forward"), ("shadow_triangles", "shadow"))),
               ("draw calls per pass", (("forward_draws", "forward"), ("shadow_draws", "shadow"))),
               ("CPU ms per frame", (("setup_culling_cpu_ms", "setup + culling"), ("passes_cpu_ms", "all passes"))),
-              ("load s per Mtri (unique)", (("load_s_per_mtri", "load + upload"),)),
+              ("load s per Mtri (unique)", (("load_s_per_mtri", "load + upload, wall"),
+                                            ("load_cpu_s_per_mtri", "load + upload, CPU"))),
               ("peak RSS MiB per Mtri (unique)", (("peak_rss_mib_per_mtri", "peak RSS"),)))
     fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels), 4.2), squeeze=False)
     for ax, (title, series) in zip(axes[0], panels):

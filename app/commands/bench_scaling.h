@@ -33,7 +33,8 @@ struct ScalingRow {
     std::size_t forwardTriangles = 0, forwardDraws = 0, shadowTriangles = 0, shadowDraws = 0;
     std::size_t forwardClustersVisible = 0, forwardClustersCulled = 0;
     std::size_t shadowClustersVisible = 0, shadowClustersCulled = 0;
-    double loadSeconds = 0.0;  // load and upload
+    double loadSeconds = 0.0;     // load and upload, wall clock
+    double loadCpuSeconds = 0.0;  // the same in process CPU time
     double peakRssMiB = 0.0;   // from just before the load to after the frames
     LoadTimings timings;
 };
