@@ -31,6 +31,12 @@ MARKERS = {"ssm": "s", "ssm-unfocused": "x", "psm": "^", "lispsm": "o",
            "csm": "P", "csm-ssm": "D", "csm-stable": "v", "csm-lispsm": "*"}
 
 
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
+
 def view_name(case):
     scene = os.path.splitext(os.path.basename(case["scene"]))[0]
     return f"{scene} / {case['camera']}" + ("" if case["variant"] == "default" else f" [{case['variant']}]")
@@ -61,9 +67,7 @@ def error_vs_time(cases, out):
             ax.grid(True, which="both", alpha=0.3)
             ax.legend(fontsize=8)
     fig.suptitle("Error against run time (labels: map size)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "error_vs_time.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "error_vs_time.png")
 
 
 def depth_curves(results, out):
@@ -86,9 +90,7 @@ def depth_curves(results, out):
     ax.set_title("Canonical case (thesis Fig. 8.6) against the closed forms of ch. 8.2", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "depth_curves.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "depth_curves.png")
 
 
 def e_total(cases, out):
@@ -110,9 +112,7 @@ def e_total(cases, out):
     ax.set_ylabel("E_total (% of lit-facing receivers)")
     ax.set_title("Shadow state against Embree ground truth")
     ax.grid(True, axis="y", alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "e_total.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "e_total.png")
 
 
 def scaling(rows, out):
@@ -143,9 +143,7 @@ def scaling(rows, out):
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     fig.suptitle("Cost against world size: constant is the goal")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "scaling.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "scaling.png")
 
 
 def main(argv):
