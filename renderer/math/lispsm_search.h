@@ -58,7 +58,7 @@ const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, cons
                                                   std::vector<SurfacePoint>& storage);
 
 // The measured receivers (visible surfaces from the depth pre-pass, with their normals; spot
-// lights: the ones inside the cone): those the light does not graze, else the grazed ones.
+// lights: the ones inside the cone) that face the light, grazed ones too.
 std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured);
 // Stand-ins where nothing was measured: the visible lit body's vertices between the two depths.
 std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& view, const ShadowLight& light,
