@@ -227,8 +227,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // sample receivers from there on (math/lispsm_search.h).
         if (visible.nearest > 0.0) params.lispsm.pseudoNear = visible.nearest;
         params.receiverPoints = visible.receivers;
-        params.fineReceiverPoints = visible.fineReceivers;
-        params.warpSearchOverFineGrid = true;
+        params.fineReceiverPoints = visible.fineReceivers;  // spot lights only (visibleDepthRange)
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
         frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), frame.shadowBounds, params);
         stats.shadow = frame.shadow.diagnostics;
@@ -298,10 +297,9 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.height = std::max(16, frame.viewport.height / 4);
     view.sceneLoad = sceneLoads_;
     view.sceneVersion = sceneVersion_;
-    // Spot lights (a cone lighting a few grid points), LiSPSM's warp search and cascades (a split
-    // holding a few of them) also sample the fine grid (math/lispsm_search.h, math/cascades.h).
-    view.fineReceivers = frame.light.type == LightType::Spot || frame.settings.method == ShadowMethod::Lispsm ||
-                         frame.settings.csm.enabled;
+    // Spot lights (a cone lighting a few grid points) and cascades (a split holding a few of them)
+    // also sample the fine grid (math/lispsm_search.h, math/cascades.h).
+    view.fineReceivers = frame.light.type == LightType::Spot || frame.settings.csm.enabled;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
             setShadowClip(p, viewProjection, frame.shadowView.eye);

@@ -143,26 +143,6 @@ const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, cons
     return out;
 }
 
-const std::vector<SurfacePoint>& denseReceiversInLight(const ShadowLight& light, const std::vector<SurfacePoint>& measured,
-                                                       const std::vector<SurfacePoint>& fine,
-                                                       std::vector<SurfacePoint>& out) {
-    // The p99 of the image sits where the footprint peaks, often on a small part of it (a street's
-    // far walls, the ground at the image's bottom edge) that the coarse grid's 48 points miss.
-    // Hard-view sweep, seed 1, 1000 sun views, LiSPSM > 1.5x SSM: 4 with the coarse grid; 2 / 1 / 1
-    // with 64 / 108 / 192 of the fine grid's points (cost: linear in them).
-    out.clear();
-    for (const SurfacePoint& p : fine)
-        if (litBy(light, p.point)) out.push_back(p);
-    if (out.empty()) return measured;
-    const std::size_t stride = (out.size() + kMaxDenseReceivers - 1) / kMaxDenseReceivers;
-    if (stride > 1) {
-        std::size_t kept = 0;
-        for (std::size_t i = 0; i < out.size(); i += stride) out[kept++] = out[i];
-        out.resize(kept);
-    }
-    return out;
-}
-
 std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured) {
     std::vector<ReceiverSample> out;
     // The measured visible surfaces (spot lights: those in the cone) with their own normals, every

@@ -57,14 +57,6 @@ const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, cons
                                                   const std::vector<SurfacePoint>& fine,
                                                   std::vector<SurfacePoint>& storage);
 
-// The receivers LiSPSM's warp search measures when asked to search over the fine grid
-// (ShadowParams::warpSearchOverFineGrid): the fine grid's points in the light, strided down to
-// kMaxDenseReceivers; `measured` itself where there is no fine grid.
-constexpr std::size_t kMaxDenseReceivers = 108;
-const std::vector<SurfacePoint>& denseReceiversInLight(const ShadowLight& light, const std::vector<SurfacePoint>& measured,
-                                                       const std::vector<SurfacePoint>& fine,
-                                                       std::vector<SurfacePoint>& storage);
-
 // The measured receivers (visible surfaces from the depth pre-pass, with their normals; spot
 // lights: the ones inside the cone) that face the light, grazed ones too.
 std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured);

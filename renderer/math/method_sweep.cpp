@@ -247,7 +247,6 @@ ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum&
     if (receivers) {
         p.receiverPoints = g.grid;
         p.fineReceiverPoints = g.fineGrid;
-        p.warpSearchOverFineGrid = true;
     }
     return p;
 }

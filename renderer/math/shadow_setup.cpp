@@ -232,11 +232,6 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     const std::vector<SurfacePoint>& measured =
         receiversInLight(light, params.receiverPoints, params.fineReceiverPoints, measuredStorage);
     const bool fineJoined = &measured == &measuredStorage;
-    std::vector<SurfacePoint> denseStorage;
-    const std::vector<SurfacePoint>& searched =
-        params.warpSearchOverFineGrid && params.method == ShadowMethod::Lispsm
-            ? denseReceiversInLight(light, measured, params.fineReceiverPoints, denseStorage)
-            : measured;
 
     glm::dmat4 M{1.0};
     bool reverse = false;
@@ -254,7 +249,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         }
         case ShadowMethod::Lispsm: {
             const LispsmInputs in{view,         basis,   light, sceneBounds, ls, bv, receiverBody, receiverVertices,
-                                  searched,     eWorld,  rayLength};
+                                  measured,     eWorld,  rayLength};
             M = lispsmMatrix(in, params.lispsm, params.collectPolygons, diag);
             break;
         }

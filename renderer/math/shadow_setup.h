@@ -87,10 +87,6 @@ struct ShadowParams {
     // image for the coarse grid (math/lispsm_search.h: receiversInLight). May be empty.
     std::vector<SurfacePoint> fineReceiverPoints;
     static constexpr int kFineReceiverGridX = 32, kFineReceiverGridY = 24;
-    // LiSPSM: search the warp over the fine grid's points (math/lispsm_search.h:
-    // denseReceiversInLight) rather than the coarse grid's. Off: cascades, which check each
-    // split's coarse choice against the fine grid themselves (math/cascades.h).
-    bool warpSearchOverFineGrid = false;
     // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
     bool collectPolygons = true;
 };
