@@ -152,7 +152,7 @@ std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, co
     // them. Surfaces facing away are not shadow-tested (thesis 6.2); those within
     // kParallelCosine of parallel to the light are left out too, since a normal reconstructed
     // from depth cannot tell them from the ones facing away, and their footprint (~1/N.L) would
-    // decide the warp alone (a box face parallel to the sun did, with a normal tilted 4 deg).
+    // decide the warp alone (a box face parallel to the sun did, with a normal tilted 7 deg).
     out.reserve(measured.size());
     const glm::dvec3 towardSun = -glm::normalize(light.direction);
     for (const SurfacePoint& p : measured) {
