@@ -207,7 +207,11 @@ TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
     const glm::dvec3 f = glm::normalize(view.forward);
     VisibleSamples s;
     s.pixelAngle = 0.005;
-    for (double z : {10.0, 11.0, 12.0, 60.0}) s.points.push_back(view.eye + f * z + glm::dvec3(0.5, 0, 0));
+    for (double z : {10.0, 11.0, 12.0, 60.0}) {
+        glm::dvec3 p = view.eye + f * z;
+        p.y = 1.0;  // above the ground, inside S
+        s.points.push_back(p);
+    }
     const CascadeSetup cs =
         computeCascadeSetup(view, sun({0.3, -1, 0.2}), terrain(), sdsmParams(SplitParameterization::Ssm, s));
     ASSERT_EQ(cs.placement, SplitPlacement::Sdsm);
