@@ -390,6 +390,7 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uNormalOffset", float(s.bias.normalOffset));
     program.set("uAdaptiveBias", s.bias.mode == DepthOffset::Adaptive ? 1 : 0);
     program.set("uAdaptiveMargin", float(s.bias.adaptiveMargin));
+    program.set("uAdaptiveCosMax", float(std::cos(glm::radians(s.bias.adaptiveMaxAngleDeg))));
     if (!frame.shadowed) return;
     setShadowClip(program, frame.worldToShadowClip, frame.view.eye);
     program.set("uReverseDepth", frame.reversedDepth ? 1 : 0);

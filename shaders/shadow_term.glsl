@@ -14,6 +14,7 @@ uniform vec2 uShadowTexel;       // 1 / shadow map size
 uniform float uNormalOffset;     // normal-offset bias in texels (settings bias.normalOffset); 0 = off
 uniform bool uAdaptiveBias;      // "adaptive" bias mode: the receiver's plane at each texel centre
 uniform float uAdaptiveMargin;   // its margin: texels of the receiver's depth slope (bias.adaptiveMargin)
+uniform float uAdaptiveCosMax;   // cos of the largest facet angle to the light it follows (bias.adaptiveMaxAngleDeg)
 #ifdef CASCADES
 layout(binding = 1) uniform sampler2DArrayShadow uShadowMap;  // one layer per split
 float shadowSample(vec2 uv, float reference, int split) { return texture(uShadowMap, vec4(uv, float(split), reference)); }
@@ -74,9 +75,9 @@ vec3 mapPoint(vec3 p, int split) {
 // light ray through a texel's centre meets it, since that centre is where the map sampled the
 // surface. The plane is the rasterised facet (the screen derivatives of the position, `facet`),
 // mapped into the map's space, where light rays are lines of constant x, y: its depth there is
-// reference + dot(gradient, centre - xy). Facets within 1 degree of the light's direction are
-// tilted to 89 degrees, which bounds the gradient (clamp: tan 89 = 57 texels of depth per texel).
-// false: no usable facet (the caller uses the plain reference).
+// reference + dot(gradient, centre - xy). Facets turned further from the light than
+// bias.adaptiveMaxAngleDeg count as turned by that angle, which bounds the gradient (the clamp:
+// tan 85 = 11.4 texels of depth per texel). false: no usable facet (the plain reference is used).
 bool receiverDepthGradient(vec3 p, vec3 facet, int split, vec4 clip, out vec2 gradient) {
     vec3 toLight;
     incidentLight(p, toLight);
@@ -84,13 +85,12 @@ bool receiverDepthGradient(vec3 p, vec3 facet, int split, vec4 clip, out vec2 gr
     if (!(len > 0.0)) return false;
     vec3 nrm = facet / len;
     if (dot(nrm, toLight) < 0.0) nrm = -nrm;
-    const float kCosMin = 0.0174524;  // cos 89 degrees
     float c = dot(nrm, toLight);
-    if (c < kCosMin) {
+    if (c < uAdaptiveCosMax) {
         vec3 across = nrm - c * toLight;
         float acrossLength = length(across);
         if (!(acrossLength > 0.0)) return false;
-        nrm = across / acrossLength * sqrt(1.0 - kCosMin * kCosMin) + toLight * kCosMin;
+        nrm = across / acrossLength * sqrt(1.0 - uAdaptiveCosMax * uAdaptiveCosMax) + toLight * uAdaptiveCosMax;
     }
     vec3 t1 = normalize(cross(nrm, abs(nrm.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
     vec3 t2 = cross(nrm, t1);

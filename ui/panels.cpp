@@ -280,6 +280,11 @@ bool drawBiasPanel(Settings& s) {
         changed |= dragDouble("margin", b.adaptiveMargin, 0.01f, 0.0, 8.0, "%.2f texels",
                               "Subtracted besides the receiver plane, in texels of the receiver's depth slope: "
                               "covers curved and bumpy surfaces (bias.adaptiveMargin; slope-scale uses 2).");
+    if (b.mode == DepthOffset::Adaptive)
+        changed |= dragDouble("max angle", b.adaptiveMaxAngleDeg, 0.1f, 45.0, 89.9, "%.1f deg",
+                              "The clamp: a facet turned further from the light counts as turned this far, so the "
+                              "compare follows its plane at most tan(angle) texels of depth per texel "
+                              "(bias.adaptiveMaxAngleDeg).");
     if (b.mode == DepthOffset::SlopeScale) {
         changed |= dragDouble("factor", b.slopeFactor, 0.05f, -16.0, 16.0, "%.2f",
                               "glPolygonOffset factor: weight of the depth slope dz (thesis eq. 5.2; the thesis "

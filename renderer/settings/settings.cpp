@@ -63,7 +63,7 @@ NLOHMANN_JSON_SERIALIZE_ENUM(CasterFaces, {{CasterFaces::Front, "front"},
                                            {CasterFaces::Both, "both"},
                                            {CasterFaces::Auto, "auto"}})
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, normalOffset,
-                                   adaptiveMargin)
+                                   adaptiveMargin, adaptiveMaxAngleDeg)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CasterSettings, singleSided, doubleSided, detectBackdrops, exclude, include)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CascadeSettings, enabled, splits, lambda, perSplit, blendBand, manualSplits,
                                    colorSplits, fitVisibleDepth, placement)

@@ -93,6 +93,10 @@ struct BiasSettings {
     // depth slope (the neighbouring facets of a curved or bumpy surface, the warped maps' non-linear
     // depth over a texel).
     double adaptiveMargin = 0.5;
+    // mode == Adaptive: facets closer than this to the light's direction count as tilted to it, so
+    // the plane's depth gradient stays below tan(angle) texels of depth per texel (the clamp): at
+    // grazing light a steeper plane moves the compare past real occluders (false light).
+    double adaptiveMaxAngleDeg = 85.0;
     bool operator==(const BiasSettings&) const = default;
 };
 

@@ -61,6 +61,7 @@ const NumberSetting kNumbers[] = {
     REAL("bias.slopeUnits", bias.slopeUnits, -1e5, 1e5),
     REAL("bias.normalOffset", bias.normalOffset, 0.0, 16.0),  // texels; more moves shadows off their casters
     REAL("bias.adaptiveMargin", bias.adaptiveMargin, 0.0, 8.0),  // texels of depth slope; the slope mode uses 2
+    REAL("bias.adaptiveMaxAngleDeg", bias.adaptiveMaxAngleDeg, 45.0, 89.9),  // between the facet normal and the light
     INTEGER("csm.splits", csm.splits, 1, kMaxCascadeSplits),
     REAL("csm.lambda", csm.lambda, 0.0, 1.0),
     REAL("csm.blendBand", csm.blendBand, 0.0, 0.5),  // half a split blended is already all transition
