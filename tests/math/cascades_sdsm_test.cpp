@@ -4,39 +4,24 @@
 #include "math/cascades.h"
 
 #include "math/random.h"
+#include "shadow_setup_fixtures.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-Aabb terrain() {
-    Aabb b;
-    b.min = {-100, 0, -100};
-    b.max = {100, 30, 100};
-    return b;
-}
+using setup_test::sunFrom;
+using setup_test::terrain;
 
 ViewFrustum groundView() {
-    ViewFrustum v;
-    v.eye = {0, 2, 50};
-    v.forward = glm::normalize(glm::dvec3(0, -0.1, -1));
-    v.fovY = 60.0 * kPi / 180.0;
-    v.aspect = 1.5;
-    v.zNear = 0.5;
+    ViewFrustum v = setup_test::groundView({0, -0.1, -1});
     v.zFar = 120.0;
     return v;
-}
-
-ShadowLight sun(glm::dvec3 travel) {
-    ShadowLight l;
-    l.direction = glm::normalize(travel);
-    return l;
 }
 
 double eyeDepth(const ViewFrustum& v, const glm::dvec3& p) { return glm::dot(p - v.eye, glm::normalize(v.forward)); }
@@ -67,11 +52,9 @@ CascadeParams sdsmParams(SplitParameterization per, const VisibleSamples& sample
 }
 
 void expectInClipCube(const glm::dmat4& m, const glm::dvec3& p, const std::string& what) {
-    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
-    ASSERT_GT(h.w, 0.0) << what;
-    EXPECT_LE(std::abs(h.x / h.w), 1.0 + 1e-4) << what;
-    EXPECT_LE(std::abs(h.y / h.w), 1.0 + 1e-4) << what;
-    EXPECT_LE(std::abs(h.z / h.w), 1.0 + 1e-4) << what;
+    ASSERT_GT((m * glm::dvec4(p, 1.0)).w, 0.0) << what;
+    const glm::dvec3 q = setup_test::ndc(m, p);
+    EXPECT_LE(std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}), 1.0 + 1e-4) << what;
 }
 
 TEST(SdsmSplits, LogarithmicOverTheSamplesDepthRange) {
@@ -135,7 +118,7 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
     const VisibleSamples samples = streetSamples(view, 4000);
     for (const glm::dvec3 dir : {glm::dvec3(0.3, -1, 0.2), glm::dvec3(-1, -0.25, 0.1), glm::dvec3(0, -0.3, 1)})
         for (SplitParameterization per : {SplitParameterization::Ssm, SplitParameterization::Lispsm}) {
-            const ShadowLight light = sun(dir);
+            const ShadowLight light = sunFrom(dir);
             const CascadeSetup tight = computeCascadeSetup(view, light, terrain(), sdsmParams(per, samples));
             ASSERT_TRUE(tight.error.empty()) << tight.error;
             EXPECT_EQ(tight.placement, SplitPlacement::Sdsm);
@@ -180,7 +163,7 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
 
 TEST(SdsmCascades, FallsBackToLambdaAndSaysWhy) {
     const ViewFrustum view = groundView();
-    const ShadowLight light = sun({0.3, -1, 0.2});
+    const ShadowLight light = sunFrom({0.3, -1, 0.2});
     CascadeParams lambda = sdsmParams(SplitParameterization::Ssm, {});
     lambda.placement = SplitPlacement::Lambda;
     const CascadeSetup reference = computeCascadeSetup(view, light, terrain(), lambda);
@@ -213,7 +196,7 @@ TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
         s.points.push_back(p);
     }
     const CascadeSetup cs =
-        computeCascadeSetup(view, sun({0.3, -1, 0.2}), terrain(), sdsmParams(SplitParameterization::Ssm, s));
+        computeCascadeSetup(view, sunFrom({0.3, -1, 0.2}), terrain(), sdsmParams(SplitParameterization::Ssm, s));
     ASSERT_EQ(cs.placement, SplitPlacement::Sdsm);
     int empty = 0;
     for (const CascadeSplit& split : cs.splits) {
