@@ -122,9 +122,20 @@ float adaptiveMapTerm(vec2 uv, float reference, vec2 gradient, int split) {
         vec2 c = texelCentre(uv);
         return shadowSample(uv, adaptiveReference(reference, uv, gradient, c, c), split);
     }
-    if (uShadowFilter == 1) {  // the hardware's 2 x 2 bilinear footprint
+    if (uShadowFilter == 1) {
+        // The hardware's 2 x 2 bilinear footprint, one texel at a time (a lookup at a texel's centre
+        // reads that texel alone), so each is compared with the plane at its own centre, then
+        // weighted as the hardware would.
         vec2 lo = texelCentre(uv - 0.5 * uShadowTexel);
-        return shadowSample(uv, adaptiveReference(reference, uv, gradient, lo, lo + uShadowTexel), split);
+        vec2 w = clamp((uv - lo) / uShadowTexel, 0.0, 1.0);
+        float sum = 0.0;
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 2; ++x) {
+                vec2 c = lo + vec2(x, y) * uShadowTexel;
+                float weight = (x == 0 ? 1.0 - w.x : w.x) * (y == 0 ? 1.0 - w.y : w.y);
+                sum += weight * shadowSample(c, adaptiveReference(reference, uv, gradient, c, c), split);
+            }
+        return sum;
     }
     int taps = uShadowFilter == 2 ? 3 : 4;
     float sum = 0.0;
