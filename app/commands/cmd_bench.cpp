@@ -157,11 +157,13 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
     for (const BenchCamera& camera : cameras)
         for (const BenchVariant& variant : spec.variants)
             for (int mapSize : spec.mapSizes)
-                for (const MethodChoice& method : spec.methods) {
+                for (const MethodChoice& method : spec.methods)
+                for (const std::optional<SplitPlacement>& placement : spec.placementsFor(method)) {
                     BenchCaseResult c;
                     c.scene = entry.file;
                     c.camera = camera.name;
                     c.variant = variant.name;
+                    if (placement) c.variant += std::string(" [") + splitPlacementName(*placement) + "]";
                     c.method = method;
                     c.mapSize = mapSize;
                     c.width = spec.width;
@@ -172,6 +174,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                     std::string error;
                     bool ok = viewSettings(*scene, camera, settings, error);
                     for (std::size_t i = 0; ok && i < variant.sets.size(); ++i) ok = setByKey(settings, variant.sets[i], error);
+                    if (placement) settings.csm.placement = *placement;
                     if (ok) {
                         settings.viewMode = ViewMode::Lit;
                         // Every timed frame renders its shadow map: with a still camera the map

@@ -19,7 +19,7 @@ GLsync asSync(void* fence) { return static_cast<GLsync>(fence); }
 
 bool DepthView::sameAs(const DepthView& o) const {
     return viewProjection == o.viewProjection && width == o.width && height == o.height && sceneLoad == o.sceneLoad &&
-           sceneVersion == o.sceneVersion && fineReceivers == o.fineReceivers;
+           sceneVersion == o.sceneVersion && fineReceivers == o.fineReceivers && samples == o.samples;
 }
 
 bool DepthView::isCutFrom(const DepthView& o, const VisibleDepthRange& measured) const {
@@ -78,7 +78,7 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         const double ndcZ = 2.0 * double(d) - 1.0;
         return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
     };
-    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}, {}};
+    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}, {}, {}};
     // Receivers: the pixels at the centres of a grid's cells (background skipped), unprojected in
     // double. (A grid reaching the image's borders won on the sweep's ground views, seed 6 sun:
     // LiSPSM 1.98x -> 1.04x SSM, but lost on Sponza CameraMain: LiSPSM p95 6.98 -> 14.3 against
@@ -149,6 +149,14 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
     // The fine grid, for spot cones that light a small part of the image (math/lispsm_search.h).
     if (view.fineReceivers)
         sampleGrid(ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY, out.fineReceivers);
+    if (view.samples) {
+        out.samples.pixelAngle = 2.0 * std::tan(0.5 * view.view.fovY) / double(view.height);
+        out.samples.points.reserve(std::size_t(view.width) * std::size_t(view.height));
+        glm::dvec3 p;
+        for (int y = 0; y < view.height; ++y)
+            for (int x = 0; x < view.width; ++x)
+                if (worldAt(x, y, p)) out.samples.points.push_back(p);
+    }
     return out;
 }
 
