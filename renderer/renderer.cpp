@@ -81,10 +81,15 @@ std::unique_ptr<Renderer> Renderer::create(std::string& error) {
     return r;
 }
 
-void Renderer::setScene(const Scene& scene, bool streamTextures) {
-    gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures);
-    culler_.setScene(scene);
+void Renderer::setScene(const Scene& scene, bool streamTextures, LoadTimings* timings) {
+    gpuScene_.reset();  // the old scene's buffers go before the new ones are made
+    gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures, timings);
+    {
+        StepTimer building(timings ? &timings->bvhMs : nullptr);
+        culler_.setScene(scene);
+    }
     scene_ = &scene;
+    StepTimer modelling(timings ? &timings->casterModelMs : nullptr);
     backdrops_ = detectBackdrops(scene);
     ++sceneLoads_;
     ++sceneVersion_;
@@ -300,6 +305,7 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     // Spot lights (a cone lighting a few grid points) and cascades (a split holding a few of them)
     // also sample the fine grid (math/lispsm_search.h, math/cascades.h).
     view.fineReceivers = frame.light.type == LightType::Spot || frame.settings.csm.enabled;
+    view.samples = frame.settings.csm.enabled && frame.settings.csm.placement == SplitPlacement::Sdsm;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {
             setShadowClip(p, viewProjection, frame.shadowView.eye);
@@ -387,6 +393,9 @@ void Renderer::setLightingUniforms(const gl::Program& program, const Frame& fram
     program.set("uUseBlurredTerm", useBlurredTerm ? 1 : 0);
     glProgramUniform2i(program.id(), program.location("uViewportOrigin"), frame.viewport.x, frame.viewport.y);
     program.set("uNormalOffset", float(s.bias.normalOffset));
+    program.set("uAdaptiveBias", s.bias.mode == DepthOffset::Adaptive ? 1 : 0);
+    program.set("uAdaptiveMargin", float(s.bias.adaptiveMargin));
+    program.set("uAdaptiveCosMax", float(std::cos(glm::radians(s.bias.adaptiveMaxAngleDeg))));
     if (!frame.shadowed) return;
     setShadowClip(program, frame.worldToShadowClip, frame.view.eye);
     program.set("uReverseDepth", frame.reversedDepth ? 1 : 0);

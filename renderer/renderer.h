@@ -41,7 +41,8 @@ public:
 
     // Uploads the scene (geometry and textures once). `streamTextures`: the textures follow over
     // the next frames through streamTextures() (the viewer; headless renders upload them at once).
-    void setScene(const Scene& scene, bool streamTextures = false);
+    // `timings` (optional) gets the build steps (clusters, BVH, caster model) and the upload added.
+    void setScene(const Scene& scene, bool streamTextures = false, LoadTimings* timings = nullptr);
     // Uploads deferred textures for about `budgetMs` (at least one); a scene change for the map
     // reuse (masked textures shape the shadow map). The number still to come.
     std::size_t streamTextures(double budgetMs);

@@ -19,6 +19,7 @@ Converter::Converter(const tinygltf::Model& model, const json& rootJson, const I
     : m(model), root(rootJson), images(capture), options(loadOptions), warnings(warningList), scene(target) {}
 
 void Converter::convert() {
+    std::optional<StepTimer> converting(std::in_place, timeInto(options, &LoadTimings::convertMs));
     convertNodes();
     reportProgress(options, kLoadProgress.nodes);
     checkGeometryBudget();
@@ -29,6 +30,8 @@ void Converter::convert() {
     convertMeshes();
     finishDeformedNodes();
     convertAnimations();
+    converting.reset();
+    StepTimer decoding(timeInto(options, &LoadTimings::decodeImagesMs));
     decodeTextures();
 }
 
@@ -51,6 +54,7 @@ void finiteFarPlanes(Scene& scene) {
 // magic apart); external buffers and images are looked up in `baseDir`.
 Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs::path& baseDir,
                 const LoadOptions& options, std::vector<std::string>& warnings) {
+    std::optional<StepTimer> parsing(std::in_place, timeInto(options, &LoadTimings::parseMs));
     if (bytes.empty()) fail("the file is empty");
     if (bytes.size() > options.limits.fileBytes)
         fail("the file's " + std::to_string(bytes.size()) + " bytes " + overLimit("fileBytes", options.limits.fileBytes));
@@ -93,6 +97,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     if (!parsed) fail(err.empty() ? std::string("tinygltf could not parse it") : cleanMessage(err).substr(0, 400));
     bytes = {};
     jsonText = {};
+    parsing.reset();
     reportProgress(options, kLoadProgress.parsed);
     {
         std::istringstream lines(warn);
@@ -101,14 +106,18 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
             if (!cleanMessage(line).empty()) warnings.push_back("tinygltf: " + cleanMessage(line).substr(0, 400));
     }
 
-    decodeMeshoptViews(model, root, options.limits);
-    decodeDracoPrimitives(model, root, options.limits);
+    {
+        StepTimer decoding(timeInto(options, &LoadTimings::decodeGeometryMs));
+        decodeMeshoptViews(model, root, options.limits);
+        decodeDracoPrimitives(model, root, options.limits);
+    }
 
     Scene scene;
     scene.source = name.string();
     Converter converter(model, root, capture, options, warnings, scene);
     converter.convert();
 
+    StepTimer finishing(timeInto(options, &LoadTimings::convertMs));
     updateWorldTransforms(scene);
     if (scene.triangleCount() == 0) warnings.push_back("the scene has no triangles to draw");
     finiteFarPlanes(scene);
@@ -167,7 +176,12 @@ LoadResult loadReporting(const std::filesystem::path& name, Load&& load) {
 LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& options) {
     return loadReporting(file, [&](std::vector<std::string>& warnings) {
         const std::filesystem::path baseDir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-        return gltf::loadBytes(gltf::readFileBytes(file, options.limits), file, baseDir, options, warnings);
+        std::vector<unsigned char> bytes;
+        {
+            StepTimer reading(gltf::timeInto(options, &LoadTimings::readMs));
+            bytes = gltf::readFileBytes(file, options.limits);
+        }
+        return gltf::loadBytes(std::move(bytes), file, baseDir, options, warnings);
     });
 }
 

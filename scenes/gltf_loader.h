@@ -2,6 +2,7 @@
 // glTF 2.0 (.gltf with external or data-URI resources, .glb) into the project's scene model.
 // tinygltf parses; everything it does not check (accessor ranges, sparse substitution, index
 // ranges, non-finite numbers, required extensions, node cycles) is validated here before use.
+#include "scenes/load_timings.h"
 #include "scenes/scene.h"
 
 #include <filesystem>
@@ -48,6 +49,8 @@ struct LoadOptions {
     // the steps). Called on the loading thread only, never concurrently; a viewer on another
     // thread should keep the value in an atomic. Empty: no calls.
     std::function<void(double)> progress;
+    // When set, each step adds its milliseconds here (`info --timings`).
+    LoadTimings* timings = nullptr;
 };
 
 struct LoadResult {

@@ -2,6 +2,7 @@
 """Charts of a `shadowlab bench` run, drawn with matplotlib (Debian python3-matplotlib).
 
 usage: bench_charts.py RESULTS.json OUT_DIR
+       bench_charts.py SCALING.csv OUT_DIR     (shadowlab bench --scaling)
 
 Writes
   error_vs_time.png   p99 texel footprint (pixels per texel; true normal, and bisector normal
@@ -10,7 +11,10 @@ Writes
   depth_curves.png    canonical validation: measured footprint per log-depth bin against the
                       closed forms of thesis 8.2 (SSM, PSM, LiSPSM), plus the logarithmic limit
   e_total.png         E_total (false shadow + false light) per method and case, when ground truth ran
+  scaling.png         from scaling.csv: triangles per pass, draws, setup + culling CPU ms, load seconds and
+                      peak RSS per million triangles against world scale, instanced and merged worlds
 """
+import csv
 import json
 import math
 import os
@@ -25,6 +29,12 @@ COLOURS = {"ssm": "tab:blue", "ssm-unfocused": "tab:gray", "psm": "tab:orange", 
            "csm": "tab:brown", "csm-ssm": "tab:purple", "csm-stable": "tab:pink", "csm-lispsm": "tab:olive"}
 MARKERS = {"ssm": "s", "ssm-unfocused": "x", "psm": "^", "lispsm": "o",
            "csm": "P", "csm-ssm": "D", "csm-stable": "v", "csm-lispsm": "*"}
+
+
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
 
 
 def view_name(case):
@@ -57,9 +67,7 @@ def error_vs_time(cases, out):
             ax.grid(True, which="both", alpha=0.3)
             ax.legend(fontsize=8)
     fig.suptitle("Error against run time (labels: map size)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "error_vs_time.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "error_vs_time.png")
 
 
 def depth_curves(results, out):
@@ -82,9 +90,7 @@ def depth_curves(results, out):
     ax.set_title("Canonical case (thesis Fig. 8.6) against the closed forms of ch. 8.2", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "depth_curves.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "depth_curves.png")
 
 
 def e_total(cases, out):
@@ -106,15 +112,50 @@ def e_total(cases, out):
     ax.set_ylabel("E_total (% of lit-facing receivers)")
     ax.set_title("Shadow state against Embree ground truth")
     ax.grid(True, axis="y", alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "e_total.png"), dpi=110)
-    plt.close(fig)
+    save(fig, out, "e_total.png")
+
+
+def scaling(rows, out):
+    panels = (("triangles per pass", (("forward_triangles", "forward"), ("shadow_triangles", "shadow"))),
+              ("draw calls per pass", (("forward_draws", "forward"), ("shadow_draws", "shadow"))),
+              ("CPU ms per frame", (("setup_culling_cpu_ms", "setup + culling"), ("passes_cpu_ms", "all passes"))),
+              ("load s per Mtri (unique)", (("load_s_per_mtri", "load + upload, wall"),
+                                            ("load_cpu_s_per_mtri", "load + upload, CPU"))),
+              ("peak RSS MiB per Mtri (unique)", (("peak_rss_mib_per_mtri", "peak RSS"),)))
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels), 4.2), squeeze=False)
+    for ax, (title, series) in zip(axes[0], panels):
+        for merged, style in (("0", "-"), ("1", "--")):
+            world = [r for r in rows if r["merged"] == merged]
+            if not world:
+                continue
+            world.sort(key=lambda r: float(r["scale"]))
+            xs = [float(r["scale"]) for r in world]
+            for key, label in series:
+                ax.plot(xs, [float(r[key]) for r in world], marker="o", linestyle=style,
+                        label=f"{label}{' (merged)' if merged == '1' else ''}")
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel("world scale (forest --scale)")
+        ax.set_title(title, fontsize=10)
+        if title.startswith("CPU"):
+            ax.set_yscale("log")  # setup + culling is a fraction of a millisecond, the passes hundreds
+        else:
+            ax.set_ylim(bottom=0)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle("Cost against world size: constant is the goal")
+    save(fig, out, "scaling.png")
 
 
 def main(argv):
     if len(argv) != 3:
         print(__doc__, file=sys.stderr)
         return 2
+    if argv[1].endswith(".csv"):
+        with open(argv[1], encoding="utf-8", newline="") as f:
+            rows = list(csv.DictReader(f))
+        os.makedirs(argv[2], exist_ok=True)
+        scaling(rows, argv[2])
+        return 0
     with open(argv[1], encoding="utf-8") as f:
         results = json.load(f)
     cases = [c for c in results.get("cases", []) if "error" not in c]

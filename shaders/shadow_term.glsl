@@ -12,6 +12,9 @@ uniform int uShadowFilter;       // 0 nearest, 1 hardware 2x2 PCF, 2 3x3 PCF, 3 
 uniform float uConstantOffset;   // depth units, "constant" bias mode
 uniform vec2 uShadowTexel;       // 1 / shadow map size
 uniform float uNormalOffset;     // normal-offset bias in texels (settings bias.normalOffset); 0 = off
+uniform bool uAdaptiveBias;      // "adaptive" bias mode: the receiver's plane at each texel centre
+uniform float uAdaptiveMargin;   // its margin: texels of the receiver's depth slope (bias.adaptiveMargin)
+uniform float uAdaptiveCosMax;   // cos of the largest facet angle to the light it follows (bias.adaptiveMaxAngleDeg)
 #ifdef CASCADES
 layout(binding = 1) uniform sampler2DArrayShadow uShadowMap;  // one layer per split
 float shadowSample(vec2 uv, float reference, int split) { return texture(uShadowMap, vec4(uv, float(split), reference)); }
@@ -60,7 +63,94 @@ vec3 normalOffsetPosition(vec3 p, vec3 n, int split) {
     return p + n * (uNormalOffset * texelWorldSize(splitMatrix(split), clip) * sinAngle);
 }
 
-float mapTerm(vec3 surface, vec3 n, int split) {
+// A point in the map's space: NDC x, y and the depth the map stores (linear or window z).
+vec3 mapPoint(vec3 p, int split) {
+    vec4 clip = splitClip(p, split);
+    vec3 ndc = clip.xyz / clip.w;
+    return vec3(ndc.xy, uLinearDepth ? splitLinearDepth(p, split) : ndc.z * 0.5 + 0.5);
+}
+
+// Adaptive depth bias (Dou, Yan, Kerzner, Dai & Wyman, "Adaptive Depth Bias for Shadow Maps", JCGT
+// 2014, section 3): the potential false occluder of a receiver is its own tangent plane where the
+// light ray through a texel's centre meets it, since that centre is where the map sampled the
+// surface. The plane is the rasterised facet (the screen derivatives of the position, `facet`),
+// mapped into the map's space, where light rays are lines of constant x, y: its depth there is
+// reference + dot(gradient, centre - xy). Facets turned further from the light than
+// bias.adaptiveMaxAngleDeg count as turned by that angle, which bounds the gradient (the clamp:
+// tan 85 = 11.4 texels of depth per texel). false: no usable facet (the plain reference is used).
+bool receiverDepthGradient(vec3 p, vec3 facet, int split, vec4 clip, out vec2 gradient) {
+    vec3 toLight;
+    incidentLight(p, toLight);
+    float len = length(facet);
+    if (!(len > 0.0)) return false;
+    vec3 nrm = facet / len;
+    if (dot(nrm, toLight) < 0.0) nrm = -nrm;
+    float c = dot(nrm, toLight);
+    if (c < uAdaptiveCosMax) {
+        vec3 across = nrm - c * toLight;
+        float acrossLength = length(across);
+        if (!(acrossLength > 0.0)) return false;
+        nrm = across / acrossLength * sqrt(1.0 - uAdaptiveCosMax * uAdaptiveCosMax) + toLight * uAdaptiveCosMax;
+    }
+    vec3 t1 = normalize(cross(nrm, abs(nrm.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+    vec3 t2 = cross(nrm, t1);
+    float step = texelWorldSize(splitMatrix(split), clip);  // about one texel apart: well conditioned
+    vec3 m0 = mapPoint(p, split);
+    vec3 d1 = mapPoint(p + t1 * step, split) - m0, d2 = mapPoint(p + t2 * step, split) - m0;
+    float det = d1.x * d2.y - d2.x * d1.y;
+    if (!(abs(det) > 1e-20)) return false;
+    gradient = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+    return true;
+}
+
+// The reference for a lookup whose texel centres span [lo, hi] (map uv): the receiver plane's
+// nearest depth to the light over them, less the margin (uReverseDepth: nearer is greater).
+float adaptiveReference(float reference, vec2 uv, vec2 gradient, vec2 lo, vec2 hi) {
+    float sgn = uReverseDepth ? -1.0 : 1.0;
+    vec2 g = gradient * sgn * 2.0;  // per uv unit (NDC = 2 uv - 1)
+    vec2 nearest = mix(hi, lo, step(vec2(0.0), g));  // the corner where the effective depth is least
+    float texelSlope = (abs(g.x) + abs(g.y)) * uShadowTexel.x;
+    float ulp = exp2(floor(log2(max(abs(reference), 1e-30))) - 23.0);
+    float effective = sgn * reference + dot(g, nearest - uv) - uAdaptiveMargin * texelSlope - 4.0 * ulp;
+    return sgn * effective;
+}
+
+vec2 texelCentre(vec2 uv) { return (floor(uv / uShadowTexel) + 0.5) * uShadowTexel; }
+
+float adaptiveMapTerm(vec2 uv, float reference, vec2 gradient, int split) {
+    if (uShadowFilter == 0) {
+        vec2 c = texelCentre(uv);
+        return shadowSample(uv, adaptiveReference(reference, uv, gradient, c, c), split);
+    }
+    if (uShadowFilter == 1) {
+        // The hardware's 2 x 2 bilinear footprint, one texel at a time (a lookup at a texel's centre
+        // reads that texel alone), so each is compared with the plane at its own centre, then
+        // weighted as the hardware would.
+        vec2 lo = texelCentre(uv - 0.5 * uShadowTexel);
+        vec2 w = clamp((uv - lo) / uShadowTexel, 0.0, 1.0);
+        float sum = 0.0;
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 2; ++x) {
+                vec2 c = lo + vec2(x, y) * uShadowTexel;
+                float weight = (x == 0 ? 1.0 - w.x : w.x) * (y == 0 ? 1.0 - w.y : w.y);
+                sum += weight * shadowSample(c, adaptiveReference(reference, uv, gradient, c, c), split);
+            }
+        return sum;
+    }
+    int taps = uShadowFilter == 2 ? 3 : 4;
+    float sum = 0.0;
+    float start = -0.5 * float(taps - 1);
+    for (int y = 0; y < taps; ++y)
+        for (int x = 0; x < taps; ++x) {
+            vec2 tap = uv + (vec2(x, y) + start) * uShadowTexel;
+            vec2 c = texelCentre(tap);
+            // Each tap's own texel: its reference is the plane there, seen from the lookup point.
+            sum += shadowSample(tap, adaptiveReference(reference, uv, gradient, c, c), split);
+        }
+    return sum / float(taps * taps);
+}
+
+float mapTerm(vec3 surface, vec3 n, vec3 facet, int split) {
     vec3 p = normalOffsetPosition(surface, n, split);
     vec4 clip = splitClip(p, split);
     if (abs(clip.w) < 1e-20) return 1.0;
@@ -70,6 +160,9 @@ float mapTerm(vec3 surface, vec3 n, int split) {
     float reference = uLinearDepth ? clamp(splitLinearDepth(p, split), 0.0, 1.0) : ndc.z * 0.5 + 0.5;
     reference += uReverseDepth ? splitOffset(split) : -splitOffset(split);
     vec2 uv = ndc.xy * 0.5 + 0.5;
+    vec2 gradient;
+    if (uAdaptiveBias && receiverDepthGradient(p, facet, split, clip, gradient))
+        return adaptiveMapTerm(uv, reference, gradient, split);
     if (uShadowFilter <= 1) return shadowSample(uv, reference, split);
     int taps = uShadowFilter == 2 ? 3 : 4;
     float sum = 0.0;
@@ -83,12 +176,15 @@ float mapTerm(vec3 surface, vec3 n, int split) {
 float shadowTerm(vec3 p, vec3 n) {
     if (uUseBlurredTerm) return texelFetch(uBlurredTerm, ivec2(gl_FragCoord.xy) - uViewportOrigin, 0).r;
     if (!uShadowsEnabled) return 1.0;
+    // The rasterised facet's plane, taken here in uniform control flow (derivatives are undefined
+    // inside the per-pixel branches below).
+    vec3 facet = cross(dFdx(p), dFdy(p));
 #ifdef CASCADES
     int split = cascadeIndex(p);
-    float term = mapTerm(p, n, split);
+    float term = mapTerm(p, n, facet, split);
     float blend = cascadeBlendWeight(p, split);
-    return blend > 0.0 ? mix(term, mapTerm(p, n, split + 1), blend) : term;
+    return blend > 0.0 ? mix(term, mapTerm(p, n, facet, split + 1), blend) : term;
 #else
-    return mapTerm(p, n, 0);
+    return mapTerm(p, n, facet, 0);
 #endif
 }

@@ -63,6 +63,18 @@ bool drawCascadePanel(Settings& s) {
                         "warp search the measured receivers of its own range (csm.fitVisibleDepth). Off, a far plane "
                         "beyond the scene leaves the last splits empty (forest, sun from the side, CSM + LiSPSM "
                         "4 x 1024^2: footprint p99 67.2 px/texel off, 53.6 on).");
+    static const SplitPlacement kPlacements[] = {SplitPlacement::Lambda, SplitPlacement::Sdsm};
+    static const char* const kPlacementNames[] = {"lambda (practical scheme)", "sample distribution (SDSM)"};
+    int placement = int(c.placement);
+    if (ImGui::Combo("placement", &placement, kPlacementNames, 2)) {
+        c.placement = kPlacements[placement];
+        changed = true;
+    }
+    tip("lambda: split depths by the practical scheme above, each split bounded by its slice of the view "
+        "frustum. SDSM (Lauritzen et al. 2011): split depths logarithmic between the nearest and farthest "
+        "surface the depth pre-pass sees, and each split's map fitted to the visible samples of its range only "
+        "(csm.placement). Without a pre-pass of this very view (the first frame, a quick turn with the "
+        "asynchronous read-back) and for stable splits, lambda is used and the fallback line says so.");
     static const SplitParameterization kPer[] = {SplitParameterization::Ssm, SplitParameterization::StableSsm,
                                                  SplitParameterization::Lispsm};
     static const char* const kPerNames[] = {"focused SSM", "stable SSM (no shimmer)", "LiSPSM"};

@@ -263,15 +263,28 @@ bool drawBiasPanel(Settings& s) {
     changed |= enumCombo("z-distribution", b.distribution, kDist, kDistNames,
                          "Thesis 5.3, Fig. 5.6: the perspective warps store hyperbolic z (1/w); a linear light-space "
                          "depth (as in TSM) makes the bias uniform over the map.");
-    static const DepthOffset kModes[] = {DepthOffset::None, DepthOffset::Constant, DepthOffset::SlopeScale};
-    static const char* const kModeNames[] = {"none", "constant", "slope-scale (polygon offset)"};
+    static const DepthOffset kModes[] = {DepthOffset::None, DepthOffset::Constant, DepthOffset::SlopeScale,
+                                         DepthOffset::Adaptive};
+    static const char* const kModeNames[] = {"none", "constant", "slope-scale (polygon offset)",
+                                             "adaptive (receiver plane)"};
     changed |= enumCombo("offset", b.mode, kModes, kModeNames,
                          "Thesis 5.1, 5.3: a depth bias against incorrect self-shadowing (acne, 3.3). Constant moves "
-                         "every depth equally; slope-scale adds factor * dz + r * units (eq. 5.2).");
+                         "every depth equally; slope-scale adds factor * dz + r * units (eq. 5.2); adaptive (Dou et "
+                         "al. 2014) compares with the receiver's own plane at each texel centre the map sampled, "
+                         "less a margin.");
     if (b.mode == DepthOffset::Constant)
         changed |= dragDouble("constant", b.constant, 0.00005f, -0.05, 0.05, "%.5f",
                               "Depth units added in the shadow compare (thesis 5.1, Fig. 5.3: too much moves the "
                               "shadows away from their casters).");
+    if (b.mode == DepthOffset::Adaptive)
+        changed |= dragDouble("margin", b.adaptiveMargin, 0.01f, 0.0, 8.0, "%.2f texels",
+                              "Subtracted besides the receiver plane, in texels of the receiver's depth slope: "
+                              "covers curved and bumpy surfaces (bias.adaptiveMargin; slope-scale uses 2).");
+    if (b.mode == DepthOffset::Adaptive)
+        changed |= dragDouble("max angle", b.adaptiveMaxAngleDeg, 0.1f, 45.0, 89.9, "%.1f deg",
+                              "The clamp: a facet turned further from the light counts as turned this far, so the "
+                              "compare follows its plane at most tan(angle) texels of depth per texel "
+                              "(bias.adaptiveMaxAngleDeg).");
     if (b.mode == DepthOffset::SlopeScale) {
         changed |= dragDouble("factor", b.slopeFactor, 0.05f, -16.0, 16.0, "%.2f",
                               "glPolygonOffset factor: weight of the depth slope dz (thesis eq. 5.2; the thesis "

@@ -202,7 +202,7 @@ bool writeResults(const BenchResults& r, const std::filesystem::path& folder, st
     return true;
 }
 
-bool drawCharts(const std::filesystem::path& folder, std::string& error) {
+bool drawCharts(const std::filesystem::path& folder, std::string& error, const std::string& input) {
     const std::filesystem::path script = std::filesystem::path(SHADOWLAB_SCRIPTS_DIR) / "bench_charts.py";
     const std::string a = script.string(), b = folder.string();
     if (a.find('\'') != std::string::npos || b.find('\'') != std::string::npos) {
@@ -212,7 +212,7 @@ bool drawCharts(const std::filesystem::path& folder, std::string& error) {
     // Debian's interpreter, where python3-matplotlib lives (a pyenv or venv python3 earlier on
     // PATH usually lacks it).
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " '" + a + "' '" + b + "/results.json' '" + b + "'";
+    const std::string command = python + " '" + a + "' '" + b + "/" + input + "' '" + b + "'";
     const int status = std::system(command.c_str());
     if (status != 0) {
         error = "the chart script failed (" + command + "); results.json and results.csv are written";

@@ -62,7 +62,8 @@ void printTable(const BenchResults& results, std::ostream& out);
 
 // Writes results.json and results.csv into `folder` (created); false with `error`.
 bool writeResults(const BenchResults& results, const std::filesystem::path& folder, std::string& error);
-// Runs the chart script on results.json; false with `error` when python3/matplotlib fail.
-bool drawCharts(const std::filesystem::path& folder, std::string& error);
+// Runs the chart script on `input` in `folder` (results.json, or scaling.csv of `bench --scaling`);
+// false with `error` when python3/matplotlib fail.
+bool drawCharts(const std::filesystem::path& folder, std::string& error, const std::string& input = "results.json");
 
 }  // namespace shadowlab::app

@@ -127,6 +127,14 @@ void parseInto(const json& root, const std::string& folder, BenchSpec& spec) {
             if (!value.is_string() || (value != "equalMemory" && value != "mapSize"))
                 bad(key, "expected \"equalMemory\" or \"mapSize\"");
             spec.csmEqualMemory = value == "equalMemory";
+        } else if (key == "csmPlacements") {
+            spec.csmPlacements.clear();
+            for (const json& v : array(value, key)) {
+                if (v != "lambda" && v != "sdsm") bad(key, "expected a list of \"lambda\" and \"sdsm\"");
+                const SplitPlacement p = v == "sdsm" ? SplitPlacement::Sdsm : SplitPlacement::Lambda;
+                if (std::find(spec.csmPlacements.begin(), spec.csmPlacements.end(), p) == spec.csmPlacements.end())
+                    spec.csmPlacements.push_back(p);
+            }
         } else if (key == "mapSizes") {
             spec.mapSizes.clear();
             for (const json& s : array(value, key)) spec.mapSizes.push_back(intIn(s, key, 512, 8192));
@@ -148,9 +156,15 @@ void parseInto(const json& root, const std::string& folder, BenchSpec& spec) {
 }  // namespace
 
 std::size_t BenchSpec::caseCount() const {
-    std::size_t views = 0;
+    std::size_t views = 0, methodCases = 0;
     for (const BenchScene& s : scenes) views += std::max<std::size_t>(1, s.cameras.size());
-    return views * methods.size() * mapSizes.size() * variants.size();
+    for (const MethodChoice& m : methods) methodCases += placementsFor(m).size();
+    return views * methodCases * mapSizes.size() * variants.size();
+}
+
+std::vector<std::optional<SplitPlacement>> BenchSpec::placementsFor(const MethodChoice& method) const {
+    if (!method.cascaded || csmPlacements.empty()) return {std::nullopt};
+    return {csmPlacements.begin(), csmPlacements.end()};
 }
 
 void applyBenchCase(Settings& settings, const MethodChoice& method, int mapSize, bool csmEqualMemory) {

@@ -19,8 +19,12 @@
 // variants). "csmLayers" says what a map size means for a cascaded case: "equalMemory" (the
 // default) gives its csm.splits layers together the texels of one mapSize^2 map (4 x 1024^2 for
 // 2048), "mapSize" makes every layer mapSize^2. Every case reports its layers and total texels.
+// "csmPlacements": ["lambda", "sdsm"] runs every cascaded method once per split placement
+// (csm.placement: the practical scheme, or sample distribution cascades), the variant's name
+// then ending in " [sdsm]" etc.; one-map methods run once. Absent: the variant's csm.placement.
 #include "settings/method_choice.h"
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -58,9 +62,13 @@ struct BenchSpec {
                                       {ShadowMethod::Lispsm, false, {}}};
     std::vector<int> mapSizes{2048};
     bool csmEqualMemory = true;  // "csmLayers": "equalMemory" (true) or "mapSize"
+    std::vector<SplitPlacement> csmPlacements;  // "csmPlacements"; empty: the variant's
     std::vector<BenchVariant> variants{BenchVariant{}};
 
     std::size_t caseCount() const;
+    // The placements a method runs with: one unset entry for one-map methods or without
+    // csmPlacements, else each of them.
+    std::vector<std::optional<SplitPlacement>> placementsFor(const MethodChoice& method) const;
 };
 
 // The settings of one case: the method choice, the map size (for cascades: the layer size that

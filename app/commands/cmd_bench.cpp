@@ -2,7 +2,9 @@
 // (scenes x cameras x methods x map sizes x settings variants) is rendered headless, timed (CPU
 // setup, GPU passes by timer queries, after warm-up) and measured with every accuracy instrument
 // (app/accuracy.h); results.json, results.csv and matplotlib charts go to DIR, a table to stdout.
+// bench --scaling --out DIR: load and frame cost against world size (commands/bench_scaling.h).
 #include "commands/bench_report.h"
+#include "commands/bench_scaling.h"
 #include "commands/bench_spec.h"
 #include "commands.h"
 #include "gl/debug_output.h"
@@ -37,6 +39,9 @@ struct BenchOptions {
     std::string out;
     bool quick = false;
     bool noCharts = false;
+    bool scaling = false;
+    ScalingBenchOptions scalingOptions;
+    std::vector<std::string> limits;
 };
 
 // "[=====     ] 5/12  forest / Camera_X  lispsm 2048  ETA 1m05s" on one terminal line.
@@ -147,11 +152,13 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
     for (const BenchCamera& camera : cameras)
         for (const BenchVariant& variant : spec.variants)
             for (int mapSize : spec.mapSizes)
-                for (const MethodChoice& method : spec.methods) {
+                for (const MethodChoice& method : spec.methods)
+                for (const std::optional<SplitPlacement>& placement : spec.placementsFor(method)) {
                     BenchCaseResult c;
                     c.scene = entry.file;
                     c.camera = camera.name;
                     c.variant = variant.name;
+                    if (placement) c.variant += std::string(" [") + splitPlacementName(*placement) + "]";
                     c.method = method;
                     c.mapSize = mapSize;
                     c.width = spec.width;
@@ -162,6 +169,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                     std::string error;
                     bool ok = viewSettings(*scene, camera, settings, error);
                     for (std::size_t i = 0; ok && i < variant.sets.size(); ++i) ok = setByKey(settings, variant.sets[i], error);
+                    if (placement) settings.csm.placement = *placement;
                     if (ok) {
                         settings.viewMode = ViewMode::Lit;
                         // Every timed frame renders its shadow map: with a still camera the map
@@ -185,7 +193,33 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                 }
 }
 
+void runScaling(const BenchOptions& options) {
+    std::string error;
+    ScalingBenchOptions scaling = options.scalingOptions;
+    LoadOptions load;
+    if (!applyLoadLimits(load, options.limits, error)) fail(error, 2);
+    scaling.limits = load.limits;
+    for (double s : scaling.scales)
+        if (!(s >= 1.0 && s <= 64.0)) fail("--scales expects world scales from 1 to 64", 2);
+    auto context = HeadlessContext::create(error);
+    if (!context) fail(error);
+    gl::DebugLog debugLog;
+    gl::installDebugOutput(debugLog);
+    std::vector<ScalingRow> rows;
+    if (!runScalingBench(scaling, options.out, rows, error)) fail(error);
+    if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while benchmarking");
+    std::cout << "wrote " << (std::filesystem::path(options.out) / "scaling.csv").string() << "\n";
+    if (!options.noCharts) {
+        if (!drawCharts(options.out, error, "scaling.csv")) fail(error);
+        std::cout << "wrote " << (std::filesystem::path(options.out) / "scaling.png").string() << "\n";
+    }
+}
+
 void runBench(const BenchOptions& options) {
+    if (options.scaling) {
+        if (options.quick || !options.spec.empty()) fail("--scaling takes no SPEC.json and no --quick", 2);
+        return runScaling(options);
+    }
     BenchSpec spec;
     std::string error;
     if (options.quick == !options.spec.empty()) failCommand("bench", "give a SPEC.json or --quick (one of them)", 2);
@@ -241,6 +275,20 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_flag("--quick", options->quick, "the built-in spec: forest (+ Sponza when found), 640x360, minutes");
     cmd->add_option("--out,-o", options->out, "output folder")->required();
     cmd->add_flag("--no-charts", options->noCharts, "skip the matplotlib charts");
+    cmd->add_flag("--scaling", options->scaling,
+                  "instead of a spec: the generated forest at --scales, each loaded, uploaded and rendered "
+                  "(--camera, --method, 640x360); scaling.csv and scaling.png (docs/large-worlds.md)");
+    cmd->add_option("--scales", options->scalingOptions.scales, "--scaling: the world scales (default 1 4 16)")
+        ->delimiter(',');
+    cmd->add_flag("--merged", options->scalingOptions.merged,
+                  "--scaling: also each world merged into one mesh (generate --merge)");
+    cmd->add_option("--worlds", options->scalingOptions.worlds,
+                    "--scaling: folder of the generated worlds, generated when missing (default: --out)");
+    cmd->add_option("--camera", options->scalingOptions.camera, "--scaling: scene camera name or index (default 0)");
+    cmd->add_option("--method", options->scalingOptions.method, "--scaling: shadow method (default lispsm)");
+    cmd->add_option("--repeats", options->scalingOptions.repeats, "--scaling: timed frames per world (default 3)")
+        ->check(CLI::Range(1, 100));
+    addLoadLimitOption(*cmd, options->limits);
     cmd->callback([options] { runBench(*options); });
 }
 

@@ -1,7 +1,11 @@
 // shadowlab info SCENE: what the loader made of a glTF file (counts, lights, cameras, bounds,
 // warnings). Exit 0 on success; on failure one message on stderr and a non-zero exit.
 // Textures are only sized from their headers, never decoded: info prints none of their pixels.
+// --timings instead loads the scene as `render` does (textures decoded), uploads it to a headless
+// context and prints where the time went (scenes/load_timings.h) and the peak resident memory.
 #include "commands.h"
+#include "commands/load_measure.h"
+#include "gl/headless_context.h"
 #include "frame/caster_model.h"
 #include "view_setup.h"
 #include "scenes/gltf_loader.h"
@@ -20,7 +24,28 @@ struct InfoOptions {
     std::string scene;
     std::vector<std::string> limits;
     std::vector<std::string> sets;
+    bool timings = false;
 };
+
+// Load and upload with each step timed. The context and shaders come first, so that neither is
+// counted.
+std::optional<Scene> loadTimed(const std::string& file, const LoadOptions& load) {
+    std::string error;
+    auto context = HeadlessContext::create(error);
+    std::unique_ptr<Renderer> renderer = context ? Renderer::create(error) : nullptr;
+    if (!renderer) {
+        std::cerr << "shadowlab info: " << error << "\n";
+        throw CLI::RuntimeError(1);
+    }
+    MeasuredLoad measured = measureLoad(file, load, renderer.get());
+    if (!measured.scene) {
+        std::cerr << "shadowlab info: " << measured.error << "\n";
+        throw CLI::RuntimeError(1);
+    }
+    std::cout << "load timings (" << context->description() << "):\n"
+              << describeLoadTimings(measured.timings) << "  " << perTriangleText(measured, peakRssBytes()) << "\n";
+    return std::move(measured.scene);
+}
 
 }  // namespace
 
@@ -41,23 +66,32 @@ void addInfoCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     addLoadLimitOption(*cmd, options->limits);
     cmd->add_option("--set", options->sets, "a setting as key=value; scene.index=N picks the glTF scene (repeatable)");
+    cmd->add_flag("--timings", options->timings,
+                  "also decode the textures, upload to a headless context and print the time of each step "
+                  "(read, parse, decode, convert, build, upload) and the peak resident memory");
     cmd->callback([options] {
         LoadOptions load;
-        load.textures = TextureDecoding::HeadersOnly;
+        load.textures = options->timings ? TextureDecoding::Decode : TextureDecoding::HeadersOnly;
         std::string error;
         if (!requestedScene(SettingsOverrides{"", "", options->sets}, load, error) ||
             !applyLoadLimits(load, options->limits, error)) {
             std::cerr << "shadowlab info: " << error << "\n";
             throw CLI::RuntimeError(2);
         }
-        const LoadResult result = loadScene(options->scene, load);
-        if (!result.ok()) {
-            std::cerr << "shadowlab info: " << result.error << "\n";
-            throw CLI::RuntimeError(1);
+        std::optional<Scene> loaded;
+        if (options->timings) {
+            loaded = loadTimed(options->scene, load);
+        } else {
+            LoadResult result = loadScene(options->scene, load);
+            if (!result.ok()) {
+                std::cerr << "shadowlab info: " << result.error << "\n";
+                throw CLI::RuntimeError(1);
+            }
+            loaded = std::move(result.scene);
         }
-        std::cout << describeScene(*result.scene);
+        const Scene& scene = *loaded;
+        std::cout << describeScene(scene);
         // The caster model with default settings: which mesh is a backdrop and how to change it.
-        const Scene& scene = *result.scene;
         const CasterChoice casters = chooseCasters(scene, CasterSettings{}, detectBackdrops(scene));
         std::cout << "casters: " << casterFacesText(casters.model) << "; "
                   << (casters.backdrops.empty() ? std::string("no backdrop")

@@ -54,6 +54,7 @@ struct RenderOptions {
 // bisector figures and its warp (where a cascade's p99 comes from).
 void printSplits(const MeasureFrame& frame, const CascadeSetup& cascades, const AliasingStats& whole) {
     const std::vector<SplitFootprint> splits = splitFootprints(frame, cascades, whole.p99);
+    if (!cascades.placementNote.empty()) std::printf("  %s\n", cascades.placementNote.c_str());
     std::size_t above = 0;
     for (const SplitFootprint& s : splits) above += s.aboveFrameP99;
     for (std::size_t i = 0; i < splits.size(); ++i) {
@@ -70,6 +71,8 @@ void printSplits(const MeasureFrame& frame, const CascadeSetup& cascades, const 
         if (split.coarseWarpLoss > 0.0)
             std::printf("  warp from the %s grid (coarse choice %.2fx the fine one's worst)",
                         split.warpFromFineGrid ? "fine" : "coarse", split.coarseWarpLoss);
+        if (cascades.placement == SplitPlacement::Sdsm)
+            std::printf("  %s over %d pre-pass samples", split.tightBounds ? "bounded" : "not bounded", split.samples);
         std::printf("\n");
     }
 }

@@ -270,9 +270,26 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
     if (out.error.empty() && !(view.zNear > 0.0 && view.zFar > view.zNear))
         out.error = "cascades need 0 < zNear < zFar";
     if (!out.error.empty()) return out;
-    const CascadeDepthRange range = cascadeDepthRange(view, params);
-    const std::vector<double> z = cascadeSplitDepths(params, range.zNear, range.zFar);
     const glm::dvec3 forward = glm::length(view.forward) > 0.0 ? glm::normalize(view.forward) : view.forward;
+    CascadeDepthRange range = cascadeDepthRange(view, params);
+    std::vector<double> z = cascadeSplitDepths(params, range.zNear, range.zFar);
+    if (params.placement == SplitPlacement::Sdsm) {
+        std::vector<double> fromSamples;
+        if (params.perSplit == SplitParameterization::StableSsm)
+            out.placementNote = "sdsm: stable splits keep their view-independent bounds, lambda used";
+        else if (params.samples.empty())
+            out.placementNote = "sdsm: no pre-pass samples of this view, lambda used";
+        else if ((fromSamples = sdsmSplitDepths(params.samples, view.eye, forward, view.zNear, view.zFar,
+                                                params.splits)).empty())
+            out.placementNote = "sdsm: the samples span no depth range, lambda used";
+        if (out.placementNote.empty()) {
+            out.placement = SplitPlacement::Sdsm;
+            range = {fromSamples.front(), fromSamples.back()};
+            if (params.manualSplits.empty()) z = std::move(fromSamples);
+            else z = cascadeSplitDepths(params, range.zNear, range.zFar);
+        }
+    }
+    const bool tight = out.placement == SplitPlacement::Sdsm;
     for (int i = 0; i < params.splits; ++i) {
         CascadeSplit split;
         split.zNear = i == 0 ? view.zNear : z[i];
@@ -283,6 +300,14 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
         p.receiverPoints = receiversBetween(params.base.receiverPoints, view.eye, forward, zLow, zHigh);
         // A spot cone's fallback to the fine grid (detail::receiversInLight) stays in the split too.
         p.fineReceiverPoints = receiversBetween(params.base.fineReceiverPoints, view.eye, forward, zLow, zHigh);
+        if (tight) {
+            const std::vector<glm::dvec3> own = samplesBetween(params.samples, view.eye, forward, zLow, zHigh);
+            split.samples = int(own.size());
+            const double farthest = std::min(zHigh, range.zFar);
+            p.receiverBounds =
+                sampleBoundPlanes(own, light.direction, forward, kSampleBoundPadPixels * params.samples.pixelAngle * farthest);
+            split.tightBounds = !p.receiverBounds.empty();
+        }
         // LiSPSM's n from the split's own depths (thesis 9.2.5 per split): the first split's
         // near plane is the view's, its receivers start at the nearest visible depth.
         p.lispsm.virtualFar = 0.0;

@@ -15,6 +15,7 @@
 //  - the light-space axes depend only on the light direction, never on the view;
 //  - the map's origin is snapped to whole texels (the map is one texel wider than the disc on
 //    each side, so the snap never uncovers a part of it).
+#include "math/cascades_sdsm.h"
 #include "math/shadow_setup.h"
 
 #include <string>
@@ -49,6 +50,12 @@ struct CascadeParams {
     // end snapped outwards to steps of kStableDepthStep (cascadeDepthRange), so a small camera
     // move does not move them.
     double visibleNear = 0.0, visibleFar = 0.0;
+    // Sdsm (math/cascades_sdsm.h): split depths logarithmic over the samples' depth range (unless
+    // manualSplits are given) and each split bounded by its own samples. Without samples (no
+    // pre-pass, or one of another view) and for stable splits (whose bound must not follow the
+    // view) the practical scheme is used, and CascadeSetup::placementNote says so.
+    SplitPlacement placement = SplitPlacement::Lambda;
+    VisibleSamples samples;
 };
 
 // Stable splits: the farthest visible depth is widened to the next power of this factor
@@ -101,11 +108,17 @@ struct CascadeSplit {
     // it was over the guard so the fine grid's warp is used.
     double coarseWarpLoss = 0.0;
     bool warpFromFineGrid = false;
+    // Sdsm: the pre-pass samples in the split's depth range, and whether they bound its receivers
+    // (a split without samples keeps V_i n S).
+    int samples = 0;
+    bool tightBounds = false;
 };
 
 struct CascadeSetup {
     std::vector<CascadeSplit> splits;
     std::string error;  // not empty: params were invalid, splits is empty
+    SplitPlacement placement = SplitPlacement::Lambda;  // what was used
+    std::string placementNote;  // not empty: sdsm was asked for and the practical scheme used instead, and why
 };
 
 CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,

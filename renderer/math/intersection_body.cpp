@@ -74,10 +74,11 @@ ConvexBody spotBody(const ShadowLight& light, const SpotFrustum& spot) {
 }  // namespace detail
 
 ConvexBody intersectionBody(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
-                            ConvexBody* visibleLit) {
+                            ConvexBody* visibleLit, const std::vector<glm::dvec4>& receiverBounds) {
     // Thesis 9.2.2 (eq. 4.2): B = ((V n S) + l) n S n L.
     ConvexBody body = frustumBody(view);
     body.clip(sceneBounds);
+    for (const glm::dvec4& plane : receiverBounds) body.clip(plane);
     if (light.kind == ShadowLightKind::Directional) {
         if (visibleLit) *visibleLit = body;
         body.extrude(-glm::normalize(light.direction), sceneBounds);  // convexHullWithDirection(-l)

@@ -44,8 +44,9 @@ struct ReceiverSample {
 // Fewer measured receivers than this in the light and a spot light's finer grid is consulted
 // (receiversInLight), and PSM's guard also checks the stand-ins (shadow_setup.cpp).
 constexpr std::size_t kEnoughMeasuredReceivers = 16;
-// Without measured receivers a warp (LiSPSM's, or PSM by its guard) is taken only where the
-// stand-ins promise this gain over SSM's largest footprint: they bound where receivers can be, not
+// Without measured receivers (LiSPSM: or fewer than kEnoughMeasuredReceivers of them) a warp
+// (LiSPSM's, or PSM by its guard) is taken only where the samples promise this gain over SSM's
+// largest footprint: they bound where receivers can be, not
 // where they are, and a smaller promised gain was about as often a loss on the image (sweep).
 constexpr double kStandInGain = 1.25;
 // At most this many receivers go into the search (its cost is linear in them).
@@ -58,7 +59,7 @@ const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, cons
                                                   std::vector<SurfacePoint>& storage);
 
 // The measured receivers (visible surfaces from the depth pre-pass, with their normals; spot
-// lights: the ones inside the cone): those the light does not graze, else the grazed ones.
+// lights: the ones inside the cone) that face the light, grazed ones too.
 std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured);
 // Stand-ins where nothing was measured: the visible lit body's vertices between the two depths.
 std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& view, const ShadowLight& light,

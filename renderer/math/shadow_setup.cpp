@@ -180,7 +180,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     const SpotFrustum spotF = spot ? spotFrustum(light, sceneBounds) : SpotFrustum{};
 
     ConvexBody visibleLit;
-    const ConvexBody B = intersectionBody(view, light, sceneBounds, &visibleLit);
+    const ConvexBody B = intersectionBody(view, light, sceneBounds, &visibleLit, params.receiverBounds);
     if (params.collectPolygons) {
         diag.viewV = frustumBody(view).faces();
         diag.sceneS = ConvexBody::fromAabb(sceneBounds).faces();

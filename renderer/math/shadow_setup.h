@@ -87,6 +87,10 @@ struct ShadowParams {
     // image for the coarse grid (math/lispsm_search.h: receiversInLight). May be empty.
     std::vector<SurfacePoint> fineReceiverPoints;
     static constexpr int kFineReceiverGridX = 32, kFineReceiverGridY = 24;
+    // Outward planes (n, d) that hold every visible receiver, e.g. the bounds of a cascade split's
+    // depth pre-pass samples (math/cascades_sdsm.h): V n S is clipped by them before B is extruded
+    // toward the light, so the map covers those receivers and their casters only. Empty: V n S.
+    std::vector<glm::dvec4> receiverBounds;
     // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
     bool collectPolygons = true;
 };
@@ -198,9 +202,10 @@ ConvexBody frustumBody(const ViewFrustum& view);
 
 // B = ((V n S) + l) n S n L (thesis eq. 4.2, 9.2.2), for V = `view` (any far plane, e.g. the
 // virtual one). Empty when nothing visible is lit. `visibleLit`, when given, receives L n V n S
-// (the body thesis 9.2.3 takes e_world from).
+// (the body thesis 9.2.3 takes e_world from). `receiverBounds` (ShadowParams::receiverBounds)
+// clip V n S before the extrusion.
 ConvexBody intersectionBody(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
-                            ConvexBody* visibleLit = nullptr);
+                            ConvexBody* visibleLit = nullptr, const std::vector<glm::dvec4>& receiverBounds = {});
 
 // n_opt for directional lights, thesis eq. 8.11; returns +infinity for sin(gamma) == 0.
 double lispsmNOptDirectional(double zNear, double d, double sinGamma);

@@ -48,12 +48,20 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     params.base = shadowParams(s, frame.shadowView, frame.shadowBounds);
     // The visible depth range and receivers (depth pre-pass): the splits cover what is seen, and
     // each split's LiSPSM search measures the receivers of its own range (math/cascades.h).
-    if (s.csm.fitVisibleDepth) {
-        const VisibleDepthRange visible = visibleDepthRange(frame, stats);
-        params.visibleNear = visible.nearest;
-        params.visibleFar = visible.farthest;
-        params.base.receiverPoints = visible.receivers;
-        params.base.fineReceiverPoints = visible.fineReceivers;  // each split's own (math/cascades.h)
+    const bool sdsm = s.csm.placement == SplitPlacement::Sdsm;
+    params.placement = s.csm.placement;
+    if (s.csm.fitVisibleDepth || sdsm) {
+        VisibleDepthRange visible = visibleDepthRange(frame, stats);
+        if (s.csm.fitVisibleDepth) {
+            params.visibleNear = visible.nearest;
+            params.visibleFar = visible.farthest;
+            params.base.receiverPoints = visible.receivers;
+            params.base.fineReceiverPoints = visible.fineReceivers;  // each split's own (math/cascades.h)
+        }
+        // Samples bound the receivers only when they are this view's (a previous frame's, or a
+        // cut's none, would cut off what the camera now sees): lambda otherwise, said in the note.
+        const bool exact = stats.visibleDepth == VisibleDepthSource::Measured || stats.visibleDepth == VisibleDepthSource::Cached;
+        if (sdsm && exact) params.samples = std::move(visible.samples);
     }
     frame.cascades = computeCascadeSetup(frame.shadowView, shadowLight(frame.light), frame.shadowBounds, params);
     lastCascades_ = frame.cascades;
@@ -66,6 +74,9 @@ void Renderer::setupCascades(Frame& frame, FrameStats& stats) {
     frame.shadowed = true;
     frame.shadow = first->setup;  // overlays and read-outs show the first split that sees something
     stats.shadow = frame.shadow.diagnostics;
+    // sdsm asked for but the practical scheme used (no samples of this view): the fallback line says so.
+    if (!frame.cascades.placementNote.empty())
+        stats.shadow.fallback += (stats.shadow.fallback.empty() ? "" : "; ") + frame.cascades.placementNote;
     lastSetup_ = frame.shadow;
     frame.linearDepth = linearShadowDepth(s);
     frame.reversedDepth = false;  // SSM, stable SSM and LiSPSM never reverse the test (only PSM does)

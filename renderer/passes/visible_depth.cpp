@@ -6,6 +6,7 @@
 #include <chrono>
 #include <string>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace shadowlab {
@@ -18,7 +19,7 @@ GLsync asSync(void* fence) { return static_cast<GLsync>(fence); }
 
 bool DepthView::sameAs(const DepthView& o) const {
     return viewProjection == o.viewProjection && width == o.width && height == o.height && sceneLoad == o.sceneLoad &&
-           sceneVersion == o.sceneVersion && fineReceivers == o.fineReceivers;
+           sceneVersion == o.sceneVersion && fineReceivers == o.fineReceivers && samples == o.samples;
 }
 
 bool DepthView::isCutFrom(const DepthView& o, const VisibleDepthRange& measured) const {
@@ -77,18 +78,19 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         const double ndcZ = 2.0 * double(d) - 1.0;
         return 2.0 * f * n / ((f + n) - ndcZ * (f - n));
     };
-    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}, {}};
+    VisibleDepthRange out{eyeDistance(nearestDepth), eyeDistance(farthestDepth), {}, {}, {}};
     // Receivers: the pixels at the centres of a grid's cells (background skipped), unprojected in
     // double. (A grid reaching the image's borders won on the sweep's ground views, seed 6 sun:
     // LiSPSM 1.98x -> 1.04x SSM, but lost on Sponza CameraMain: LiSPSM p95 6.98 -> 14.3 against
-    // SSM's 11.5, since the border receivers' extreme footprints then decide the warp.) Each gets
-    // the normal of the plane through it and its horizontal and vertical neighbours (the one
-    // facing the eye); where a neighbour is background or across a depth edge the normal faces the
-    // eye.
+    // SSM's 11.5, since the border receivers' extreme footprints then decide the warp.)
     constexpr int kGridX = ShadowParams::kReceiverGridX, kGridY = ShadowParams::kReceiverGridY;
     const glm::dmat4 clipToWorld = glm::inverse(view.viewProjection);
+    auto depthAt = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= view.width || y >= view.height) return 1.0f;
+        return depth[std::size_t(y) * std::size_t(view.width) + std::size_t(x)];
+    };
     auto worldAt = [&](int x, int y, glm::dvec3& p) {
-        const float d = depth[std::size_t(y) * std::size_t(view.width) + std::size_t(x)];
+        const float d = depthAt(x, y);
         if (!(d < 1.0f)) return false;
         const glm::dvec4 ndc{2.0 * (x + 0.5) / view.width - 1.0, 2.0 * (y + 0.5) / view.height - 1.0, 2.0 * d - 1.0, 1.0};
         const glm::dvec4 w = clipToWorld * ndc;
@@ -96,6 +98,31 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
         p = glm::dvec3(w) / w.w;
         return true;
     };
+    // The step to the neighbour (dx, dy) = +-1 along one axis on the same plane: window depth is
+    // affine in the pixel position over a plane (it is affine in 1/z, as is the pixel position),
+    // so the side whose second difference d(0) - 2 d(1) + d(2) is smaller lies on the receiver's
+    // plane, the other may cross an edge (a one-sided difference across a box's silhouette tilted
+    // a box face 7 deg towards a sun it is parallel to, and that receiver decided the warp).
+    auto tangent = [&](int x, int y, int dx, int dy, const glm::dvec3& p, glm::dvec3& t) {
+        double bestError = std::numeric_limits<double>::infinity();
+        int bestSide = 0;
+        for (int side = -1; side <= 1; side += 2) {
+            const float d1 = depthAt(x + side * dx, y + side * dy);
+            if (!(d1 < 1.0f)) continue;
+            const float d2 = depthAt(x + 2 * side * dx, y + 2 * side * dy);
+            const double error = d2 < 1.0f ? std::abs(double(depthAt(x, y)) - 2.0 * d1 + d2) : 1e30;
+            if (error < bestError) {
+                bestError = error;
+                bestSide = side;
+            }
+        }
+        glm::dvec3 q;
+        if (bestSide == 0 || !worldAt(x + bestSide * dx, y + bestSide * dy, q)) return false;
+        t = double(bestSide) * (q - p);
+        return true;
+    };
+    // Each receiver gets the normal of its plane (the one facing the eye); where no neighbour on
+    // a plane is found (background, a one-pixel feature) the normal faces the eye.
     auto sampleGrid = [&](int gridX, int gridY, std::vector<SurfacePoint>& receivers) {
         receivers.reserve(std::size_t(gridX) * std::size_t(gridY));
         for (int j = 0; j < gridY; ++j)
@@ -103,22 +130,18 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
                 const int x = (2 * i + 1) * view.width / (2 * gridX), y = (2 * j + 1) * view.height / (2 * gridY);
                 SurfacePoint s;
                 if (!worldAt(x, y, s.point)) continue;
-                glm::dvec3 right, up;
-                const int xr = std::min(x + 1, view.width - 1) == x ? x - 1 : x + 1;
-                const int yu = std::min(y + 1, view.height - 1) == y ? y - 1 : y + 1;
                 const glm::dvec3 toEye = view.view.eye - s.point;
+                glm::dvec3 a, b;
                 s.normal = glm::dvec3(0.0);
-                if (worldAt(xr, y, right) && worldAt(x, yu, up)) {
-                    const glm::dvec3 a = right - s.point, b = up - s.point, n = glm::cross(a, b);
+                if (tangent(x, y, 1, 0, s.point, a) && tangent(x, y, 0, 1, s.point, b)) {
+                    const glm::dvec3 n = glm::cross(a, b);
                     const double len = glm::length(n);
                     // Across a depth edge the neighbours lie far apart: more than 10x the pixel's width.
                     const double spread = std::max(glm::length(a), glm::length(b));
                     if (len > 0.0 && spread < 10.0 * std::min(glm::length(a), glm::length(b)) + 1e-12)
                         s.normal = glm::dot(n, toEye) >= 0.0 ? n / len : -n / len;
                 }
-                if (glm::length(s.normal) == 0.0) {  // no reliable normal: face the eye
-                    s.normal = glm::normalize(toEye);
-                }
+                if (glm::length(s.normal) == 0.0) s.normal = glm::normalize(toEye);  // no reliable normal
                 receivers.push_back(s);
             }
     };
@@ -126,6 +149,14 @@ VisibleDepthRange VisibleDepthPrePass::reduce(const float* depth, const DepthVie
     // The fine grid, for spot cones that light a small part of the image (math/lispsm_search.h).
     if (view.fineReceivers)
         sampleGrid(ShadowParams::kFineReceiverGridX, ShadowParams::kFineReceiverGridY, out.fineReceivers);
+    if (view.samples) {
+        out.samples.pixelAngle = 2.0 * std::tan(0.5 * view.view.fovY) / double(view.height);
+        out.samples.points.reserve(std::size_t(view.width) * std::size_t(view.height));
+        glm::dvec3 p;
+        for (int y = 0; y < view.height; ++y)
+            for (int x = 0; x < view.width; ++x)
+                if (worldAt(x, y, p)) out.samples.points.push_back(p);
+    }
     return out;
 }
 

@@ -32,6 +32,9 @@ struct VisibleDepthRange {
     // receivers LiSPSM's warp search and PSM's guard measure the footprint at (math/lispsm_search.h).
     std::vector<SurfacePoint> receivers;
     std::vector<SurfacePoint> fineReceivers;  // the same at a 4x finer grid (ShadowParams::fineReceiverPoints)
+    // Every pre-pass pixel that sees geometry, in world space (sample distribution cascades,
+    // math/cascades_sdsm.h); only when DepthView::samples asks.
+    VisibleSamples samples;
 };
 
 // What a measurement is valid for.
@@ -42,6 +45,7 @@ struct DepthView {
     std::uint64_t sceneLoad = 0;     // which scene upload (a new scene is a cut)
     std::uint64_t sceneVersion = 0;  // instance updates (animation) since: not a cut, but not the same view
     bool fineReceivers = false;      // also sample the fine receiver grid (spot lights only use it)
+    bool samples = false;            // also keep every visible pixel's world position
     bool sameAs(const DepthView& other) const;
     // Too far from `other` for a measurement of `other` to bound this view's depths.
     bool isCutFrom(const DepthView& other, const VisibleDepthRange& measured) const;

@@ -39,6 +39,43 @@ struct MaterialData {
     glm::ivec4 modeAndTexture;
 };
 
+// Storage of `bytes` (at least 1) that the upload writes once through a mapping.
+gl::Buffer createWrittenBuffer(std::size_t bytes) {
+    gl::Buffer buffer = gl::createBuffer();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(std::max<std::size_t>(1, bytes)), nullptr, GL_MAP_WRITE_BIT);
+    return buffer;
+}
+
+// The whole buffer mapped for writing `count` elements; writes are dropped when the map failed
+// (out of memory: the GL debug output reports it) or would run past the end.
+template <class T>
+class MappedRange {
+public:
+    MappedRange(GLuint buffer, std::size_t count) : buffer_(buffer), count_(count) {
+        if (count > 0)
+            data_ = static_cast<T*>(glMapNamedBufferRange(buffer, 0, GLsizeiptr(count * sizeof(T)),
+                                                          GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
+    }
+    ~MappedRange() { unmap(); }
+    MappedRange(const MappedRange&) = delete;
+    MappedRange& operator=(const MappedRange&) = delete;
+    void write(std::size_t at, const T& value) {
+        if (data_ && at < count_) data_[at] = value;
+    }
+    void write(std::size_t at, const std::vector<T>& values) {
+        if (data_ && at <= count_ && values.size() <= count_ - at) std::copy(values.begin(), values.end(), data_ + at);
+    }
+    void unmap() {
+        if (data_) glUnmapNamedBuffer(buffer_);
+        data_ = nullptr;
+    }
+
+private:
+    GLuint buffer_;
+    std::size_t count_;
+    T* data_ = nullptr;
+};
+
 bool mipmapped(int minFilter) { return minFilter >= 9984 && minFilter <= 9987; }
 
 // glTF wrap modes are GL enums; anything else in a file falls back to REPEAT (glTF's default).
@@ -81,32 +118,53 @@ bool GpuScene::uploadPendingTextures(const Scene& scene, double budgetMs) {
     return true;
 }
 
-GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;
+GpuScene::GpuScene(const Scene& scene, bool deferTextures, LoadTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
+    double clustersMs = 0.0;
+    // The vertex and index buffers are sized first and written in place (mapped), one primitive
+    // at a time: no CPU copy of the whole geometry exists beside the scene's. (On llvmpipe the
+    // buffers are CPU memory too; a staging copy was a third copy at the upload's peak.)
+    std::size_t vertexTotal = 0, indexTotal = 0;
+    for (const Mesh& mesh : scene.meshes)
+        for (const Primitive& p : mesh.primitives) {
+            vertexTotal += p.positions.size();
+            indexTotal += p.indices.size();
+        }
+    vertices_ = createWrittenBuffer(vertexTotal * sizeof(Vertex));
+    indices_ = createWrittenBuffer(indexTotal * sizeof(std::uint32_t));
+    MappedRange<Vertex> vertices(vertices_.id(), vertexTotal);
+    MappedRange<std::uint32_t> indices(indices_.id(), indexTotal);
+    std::vector<std::uint32_t> clusterOrder;  // one primitive's indices, in cluster order
+    std::size_t vertexCount = 0, indexCount = 0;
     meshes_.resize(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         for (const Primitive& p : scene.meshes[m].primitives) {
             GpuPrimitive gp;
-            gp.baseVertex = GLint(vertices.size());
-            gp.firstIndex = GLuint(indices.size());
+            gp.baseVertex = GLint(vertexCount);
+            gp.firstIndex = GLuint(indexCount);
             gp.indexCount = GLsizei(p.indices.size());
             gp.material = p.material;
-            for (std::size_t v = 0; v < p.positions.size(); ++v) {
-                Vertex vx{p.positions[v], v < p.normals.size() ? p.normals[v] : glm::vec3(0, 1, 0),
-                          v < p.texcoords.size() ? p.texcoords[v] : glm::vec2(0)};
-                vertices.push_back(vx);
-            }
+            for (std::size_t v = 0; v < p.positions.size(); ++v)
+                vertices.write(vertexCount + v, {p.positions[v], v < p.normals.size() ? p.normals[v] : glm::vec3(0, 1, 0),
+                                                 v < p.texcoords.size() ? p.texcoords[v] : glm::vec2(0)});
+            vertexCount += p.positions.size();
             // Large primitives go in cluster order, each cluster a contiguous index range. Skinned
             // and morphed meshes stay whole: cluster bounds are of the bind pose, which the pose leaves.
             const bool deformed = scene.meshes[m].skinned() || scene.meshes[m].morphed();
-            addClusters(gp, clusterTriangles(p.positions, p.indices, indices, kClusterTriangles,
-                                             deformed ? SIZE_MAX : kMinClusteredTriangles));
+            clusterOrder.clear();
+            {
+                StepTimer splitting(&clustersMs);
+                addClusters(gp, clusterTriangles(p.positions, p.indices, clusterOrder, kClusterTriangles,
+                                                 deformed ? SIZE_MAX : kMinClusteredTriangles));
+            }
+            indices.write(indexCount, clusterOrder);
+            indexCount += clusterOrder.size();
             meshes_[m].primitives.push_back(gp);
         }
         // A mesh is drawn by clusters when a primitive of it is: its small ones become one cluster.
         GpuMesh& mesh = meshes_[m];
         auto hasClusters = [](const GpuPrimitive& gp) { return gp.clusters >= 0; };
+        StepTimer splitting(&clustersMs);
         if (std::any_of(mesh.primitives.begin(), mesh.primitives.end(), hasClusters))
             for (std::size_t k = 0; k < mesh.primitives.size(); ++k)
                 if (mesh.primitives[k].clusters < 0)
@@ -114,6 +172,8 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
                                                                   scene.meshes[m].primitives[k].indices));
         mesh.clustered = !mesh.primitives.empty() && std::all_of(mesh.primitives.begin(), mesh.primitives.end(), hasClusters);
     }
+    vertices.unmap();
+    indices.unmap();
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const int mesh = scene.instances[i].mesh;
         if (mesh >= 0 && mesh < int(meshes_.size())) meshes_[mesh].instances.push_back(int(i));
@@ -127,17 +187,11 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
         triangles_ += tris * mesh.instances.size();
     }
 
-    vertices_ = gl::createBuffer();
-    glNamedBufferStorage(vertices_.id(), GLsizeiptr(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
-                         vertices.empty() ? nullptr : vertices.data(), 0);
     std::vector<std::vector<GLint>> baseVertex(meshes_.size());
     for (std::size_t m = 0; m < meshes_.size(); ++m)
         for (const GpuPrimitive& p : meshes_[m].primitives) baseVertex[m].push_back(p.baseVertex);
     deformer_ = std::make_unique<GpuDeformer>(scene, baseVertex);
     if (deformer_->empty()) deformer_.reset();
-    indices_ = gl::createBuffer();
-    glNamedBufferStorage(indices_.id(), GLsizeiptr(std::max<std::size_t>(1, indices.size()) * sizeof(std::uint32_t)),
-                         indices.empty() ? nullptr : indices.data(), 0);
     instanceData_ = gl::createBuffer();
     glNamedBufferStorage(instanceData_.id(), GLsizeiptr(std::max<std::size_t>(1, scene.instances.size()) * sizeof(InstanceData)),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -184,6 +238,12 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures) {
         samplers_.push_back(std::move(sampler));
     }
     uploadMaterials(scene);
+    if (!timings) return;
+    // llvmpipe copies buffer and texture data when it is specified; glFinish makes a GPU's
+    // transfers count too.
+    glFinish();
+    timings->clustersMs += clustersMs;
+    timings->uploadMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() - clustersMs;
 }
 
 void GpuScene::addClusters(GpuPrimitive& primitive, ClusteredPrimitive clustered) {

@@ -8,6 +8,7 @@
 #include "culling/instance_culling.h"
 #include "culling/mesh_clusters.h"
 #include "gl/gl_objects.h"
+#include "scenes/load_timings.h"
 #include "scenes/scene.h"
 #include "resources/gpu_deform.h"
 
@@ -59,7 +60,8 @@ public:
     // `deferTextures`: images start as 1x1 white (the material's factor shows) and are uploaded by
     // uploadPendingTextures, a few per frame, so opening Sponza does not freeze the window for the
     // whole upload (294 ms on llvmpipe, of which the textures are most).
-    explicit GpuScene(const Scene& scene, bool deferTextures = false);
+    // `timings` (optional) gets the cluster split and the upload (the rest) added.
+    explicit GpuScene(const Scene& scene, bool deferTextures = false, LoadTimings* timings = nullptr);
 
     // Uploads deferred textures (pixels and mipmaps) until `budgetMs` has passed, at least one;
     // `scene` must be the one constructed from, its pixels unchanged. True when one was uploaded.

@@ -31,7 +31,8 @@ NLOHMANN_JSON_SERIALIZE_ENUM(DepthDistribution, {{DepthDistribution::Hyperbolic,
                                                  {DepthDistribution::Auto, "auto"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(DepthOffset, {{DepthOffset::None, "none"},
                                            {DepthOffset::Constant, "constant"},
-                                           {DepthOffset::SlopeScale, "slope"}})
+                                           {DepthOffset::SlopeScale, "slope"},
+                                           {DepthOffset::Adaptive, "adaptive"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(ShadowFilter, {{ShadowFilter::Nearest, "nearest"},
                                             {ShadowFilter::Pcf2x2Hardware, "pcf2x2"},
                                             {ShadowFilter::Pcf3x3, "pcf3x3"},
@@ -47,6 +48,7 @@ NLOHMANN_JSON_SERIALIZE_ENUM(LightSource, {{LightSource::Scene, "scene"},
 NLOHMANN_JSON_SERIALIZE_ENUM(SplitParameterization, {{SplitParameterization::Ssm, "ssm"},
                                                      {SplitParameterization::StableSsm, "stable"},
                                                      {SplitParameterization::Lispsm, "lispsm"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(SplitPlacement, {{SplitPlacement::Lambda, "lambda"}, {SplitPlacement::Sdsm, "sdsm"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(ToneMapping, {{ToneMapping::None, "none"},
                                            {ToneMapping::PbrNeutral, "pbr-neutral"},
                                            {ToneMapping::Aces, "aces"}})
@@ -60,10 +62,11 @@ NLOHMANN_JSON_SERIALIZE_ENUM(CasterFaces, {{CasterFaces::Front, "front"},
                                            {CasterFaces::Back, "back"},
                                            {CasterFaces::Both, "both"},
                                            {CasterFaces::Auto, "auto"}})
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, normalOffset)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BiasSettings, distribution, mode, constant, slopeFactor, slopeUnits, normalOffset,
+                                   adaptiveMargin, adaptiveMaxAngleDeg)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CasterSettings, singleSided, doubleSided, detectBackdrops, exclude, include)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CascadeSettings, enabled, splits, lambda, perSplit, blendBand, manualSplits,
-                                   colorSplits, fitVisibleDepth)
+                                   colorSplits, fitVisibleDepth, placement)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FilterSettings, filter, blurIterations, depthDependentBlur, edgeAwareBlur,
                                    blurStrength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DisplaySettings, exposureEv, toneMapping, hemisphereAmbient, msaaSamples,

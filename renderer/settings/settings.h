@@ -22,7 +22,9 @@ namespace shadowlab {
 // hyperbolic. Uniform maps store the same depths either way and keep the depth pass without a
 // gl_FragDepth write.
 enum class DepthDistribution { Hyperbolic, Linear, Auto };
-enum class DepthOffset { None, Constant, SlopeScale };
+// Adaptive: the receiver's own plane at each looked-up texel centre (Dou et al., JCGT 2014; the
+// shader's shadow_term.glsl), with a margin of bias.adaptiveMargin texels of its depth slope.
+enum class DepthOffset { None, Constant, SlopeScale, Adaptive };
 enum class ShadowFilter { Nearest, Pcf2x2Hardware, Pcf3x3, Pcf4x4 };
 // Lit; the shadow term on unlit, unicoloured geometry (thesis Fig. 6.5); the perspective
 // aliasing error dp/ds of thesis eq. 8.1 per pixel, colour-coded (AliasingError) or as raw values
@@ -87,6 +89,14 @@ struct BiasSettings {
     // map's world texel size at the point) times sin(angle between normal and light), so grazing
     // receivers move most; combinable with every mode above. 0 = off.
     double normalOffset = 0.0;
+    // mode == Adaptive: what is subtracted besides the receiver plane, in texels of the receiver's
+    // depth slope (the neighbouring facets of a curved or bumpy surface, the warped maps' non-linear
+    // depth over a texel).
+    double adaptiveMargin = 0.5;
+    // mode == Adaptive: facets closer than this to the light's direction count as tilted to it, so
+    // the plane's depth gradient stays below tan(angle) texels of depth per texel (the clamp): at
+    // grazing light a steeper plane moves the compare past real occluders (false light).
+    double adaptiveMaxAngleDeg = 85.0;
     bool operator==(const BiasSettings&) const = default;
 };
 
@@ -124,6 +134,9 @@ struct CascadeSettings {
     // Spread the splits over the visible depth range the depth pre-pass measures (and give each
     // split's LiSPSM search the measured receivers of its range); off: over [near, far].
     bool fitVisibleDepth = true;
+    // lambda: the practical scheme above; sdsm: split depths and tight per-split bounds from the
+    // depth pre-pass's samples (math/cascades_sdsm.h; lambda where the frame has no samples).
+    SplitPlacement placement = SplitPlacement::Lambda;
     bool operator==(const CascadeSettings&) const = default;
 };
 

@@ -60,6 +60,8 @@ const NumberSetting kNumbers[] = {
     REAL("bias.slopeFactor", bias.slopeFactor, -64.0, 64.0),
     REAL("bias.slopeUnits", bias.slopeUnits, -1e5, 1e5),
     REAL("bias.normalOffset", bias.normalOffset, 0.0, 16.0),  // texels; more moves shadows off their casters
+    REAL("bias.adaptiveMargin", bias.adaptiveMargin, 0.0, 8.0),  // texels of depth slope; the slope mode uses 2
+    REAL("bias.adaptiveMaxAngleDeg", bias.adaptiveMaxAngleDeg, 45.0, 89.9),  // between the facet normal and the light
     INTEGER("csm.splits", csm.splits, 1, kMaxCascadeSplits),
     REAL("csm.lambda", csm.lambda, 0.0, 1.0),
     REAL("csm.blendBand", csm.blendBand, 0.0, 0.5),  // half a split blended is already all transition
@@ -88,10 +90,11 @@ const Choices kChoices[] = {
     {"viewMode", "lit, shadow-term, aliasing, aliasing-raw"},
     {"light.source", "scene, sun, spot"},
     {"bias.distribution", "hyperbolic, linear, auto"},
-    {"bias.mode", "none, constant, slope"},
+    {"bias.mode", "none, constant, slope, adaptive"},
     {"casters.singleSided", "front, back, both, auto"},
     {"casters.doubleSided", "front, back, both, auto"},
     {"csm.perSplit", "ssm, stable, lispsm"},
+    {"csm.placement", "lambda, sdsm"},
     {"filter.filter", "nearest, pcf2x2, pcf3x3, pcf4x4"},
     {"compare.methods", methodChoiceNames()},  // one-map and cascade names (settings/method_choice.h)
     {"display.toneMapping", "none, pbr-neutral, aces"},

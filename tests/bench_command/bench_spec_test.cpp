@@ -1,4 +1,4 @@
-// The bench spec's "methods" and "csmLayers" (app/commands/bench_spec.h) and the method names they use
+// The bench spec's "methods", "csmLayers" and "csmPlacements" (app/commands/bench_spec.h) and the method names they use
 // (settings/method_choice.h): cascaded choices parse, bad names fail with the list of good ones,
 // and equal memory gives 4 splits layers of half the map's side.
 #include "commands/bench_spec.h"
@@ -79,6 +79,24 @@ TEST(BenchSpecMethods, BadNamesAndLayerModesFailWithTheKey) {
     EXPECT_NE(error.find("\"csmLayers\""), std::string::npos) << error;
     ASSERT_TRUE(parse(R"("csmLayers": "mapSize")", spec, error)) << error;
     EXPECT_FALSE(spec.csmEqualMemory);
+}
+
+TEST(BenchSpecMethods, CsmPlacementsRunEachCascadeOncePerPlacement) {
+    BenchSpec spec;
+    std::string error;
+    ASSERT_TRUE(parse(R"("methods": ["lispsm", "csm-lispsm", "csm-ssm"], "csmPlacements": ["lambda", "sdsm", "sdsm"])",
+                      spec, error))
+        << error;
+    ASSERT_EQ(spec.csmPlacements.size(), 2u);  // duplicates dropped
+    EXPECT_EQ(spec.placementsFor(spec.methods[0]).size(), 1u);  // one map: once, placement unset
+    EXPECT_FALSE(spec.placementsFor(spec.methods[0])[0].has_value());
+    ASSERT_EQ(spec.placementsFor(spec.methods[1]).size(), 2u);
+    EXPECT_EQ(*spec.placementsFor(spec.methods[1])[1], SplitPlacement::Sdsm);
+    EXPECT_EQ(spec.caseCount(), 5u);
+    EXPECT_FALSE(parse(R"("csmPlacements": ["log"])", spec, error));
+    EXPECT_NE(error.find("\"csmPlacements\""), std::string::npos) << error;
+    ASSERT_TRUE(parse(R"("methods": ["csm-lispsm"])", spec, error)) << error;
+    EXPECT_EQ(spec.caseCount(), 1u);  // without the key: the variant's placement
 }
 
 TEST(BenchSpecMethods, ACaseAtEqualMemoryHasTheTexelsOfTheOneMap) {

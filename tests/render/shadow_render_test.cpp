@@ -218,6 +218,31 @@ INSTANTIATE_TEST_SUITE_P(
         return std::string(splitParameterizationName(info.param.perSplit)) + "_" + info.param.lightName;
     });
 
+// Sample distribution cascades (csm.placement=sdsm, math/cascades_sdsm.h): splits fitted to the
+// depth pre-pass's samples only still put the box's shadow where the rays do, and the settled frame
+// used this view's samples (no fallback note).
+TEST_F(CascadeShadowRender, SampleDistributionSplitsKeepTheShadowInPlace) {
+    const Scene scene = planeBoxScene(fromSide());
+    for (SplitParameterization per : {SplitParameterization::Ssm, SplitParameterization::Lispsm}) {
+        Settings s = shadowView(ShadowMethod::SsmFocused);
+        s.csm.enabled = true;
+        s.csm.placement = SplitPlacement::Sdsm;
+        s.csm.perSplit = per;
+        FrameStats stats;
+        const Classification k = classify(render(scene, s, &stats), s, fromSide(), 0.25);
+        const std::string what = splitParameterizationName(per);
+        ASSERT_GT(k.shadow, 60) << what;
+        EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << what << ": shadowed ground rendered lit";
+        EXPECT_LT(k.litButDark, k.lit * 2 / 100) << what << ": lit ground rendered dark";
+        EXPECT_EQ(stats.shadow.fallback.find("sdsm"), std::string::npos) << what << ": " << stats.shadow.fallback;
+        const CascadeSetup& used = renderer_->lastCascadeSetup();
+        EXPECT_EQ(used.placement, SplitPlacement::Sdsm) << what;
+        int tight = 0;
+        for (const CascadeSplit& split : used.splits) tight += split.tightBounds;
+        EXPECT_GE(tight, 3) << what << ": the splits are bounded by their samples";
+    }
+}
+
 // A shadow that crosses split boundaries (blend band, PCF across layers, linear depth with its
 // per-split range, per-split constant offset) stays where the ray cast says.
 TEST_F(CascadeShadowRender, BlendBandPcfAndLinearDepthKeepTheShadowInPlace) {
@@ -290,9 +315,42 @@ TEST_F(Acne, NormalOffsetAloneRemovesAcne) {
     }
 }
 
+// Adaptive bias (Dou et al. 2014; shaders/shadow_term.glsl): under a sun 5 degrees above the plane,
+// where the ground's depth changes by 11 texels of its own size per texel, the receiver plane at
+// the texel centres leaves less false shadow on the lit ground than the constant offset, with one
+// map and with cascades, and keeps the box's shadow (no false light).
+TEST_F(Acne, AdaptiveBiasLeavesLessFalseShadowThanConstantAtGrazingLight) {
+    const glm::dvec3 light = glm::normalize(glm::dvec3(1.0, -0.0875, 0.3));  // 4.8 degrees up
+    const Scene scene = planeBoxScene(light);
+    for (bool cascades : {false, true})
+        for (ShadowFilter filter : {ShadowFilter::Pcf2x2Hardware, ShadowFilter::Pcf3x3}) {
+            double falseShadow[2] = {0.0, 0.0};
+            for (DepthOffset mode : {DepthOffset::Constant, DepthOffset::Adaptive}) {
+                Settings s = shadowView(ShadowMethod::Lispsm);
+                s.bias.mode = mode;
+                s.casters.singleSided = CasterFaces::Both;
+                s.filter.filter = filter;
+                s.csm.enabled = cascades;
+                s.csm.perSplit = SplitParameterization::Lispsm;
+                renderer_.reset();
+                const Classification k = classify(render(scene, s), s, light, 0.25);
+                ASSERT_GT(k.lit, 1000);
+                ASSERT_GT(k.shadow, 60);
+                const std::string what = std::string(cascades ? "csm" : "one map") + " filter " +
+                                         std::to_string(int(filter)) + " mode " + std::to_string(int(mode));
+                EXPECT_LT(k.shadowButLit, k.shadow * 2 / 100) << what << ": the box's shadow must stay";
+                falseShadow[mode == DepthOffset::Adaptive] = double(k.litButDark) / k.lit;
+            }
+            std::printf("false shadow on the lit ground at 4.8 deg (%s, filter %d): constant %.4f, adaptive %.4f\n",
+                        cascades ? "csm" : "one map", int(filter), falseShadow[0], falseShadow[1]);
+            EXPECT_LT(falseShadow[1], falseShadow[0]);
+            EXPECT_LT(falseShadow[1], 0.005);
+        }
+}
+
 TEST_F(Acne, EveryBiasCombinationRendersWithoutGlErrors) {
     for (DepthDistribution dist : {DepthDistribution::Hyperbolic, DepthDistribution::Linear})
-        for (DepthOffset mode : {DepthOffset::None, DepthOffset::Constant, DepthOffset::SlopeScale})
+        for (DepthOffset mode : {DepthOffset::None, DepthOffset::Constant, DepthOffset::SlopeScale, DepthOffset::Adaptive})
             for (bool back : {false, true})
                 for (ShadowMethod m : {ShadowMethod::SsmFocused, ShadowMethod::Psm, ShadowMethod::Lispsm}) {
                     const Scene scene = planeBoxScene(fromSide());

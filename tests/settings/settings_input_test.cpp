@@ -71,7 +71,7 @@ TEST(SettingsInput, ChoicesAreListedWhenAValueIsNotOne) {
     Settings s;
     std::string error;
     EXPECT_FALSE(setByKey(s, "bias.mode=sloped", error));
-    EXPECT_TRUE(contains(error, "expects one of none, constant, slope, got 'sloped'")) << error;
+    EXPECT_TRUE(contains(error, "expects one of none, constant, slope, adaptive, got 'sloped'")) << error;
     EXPECT_FALSE(fromJsonText(R"({"method": "csm"})", s, error));
     EXPECT_TRUE(contains(error, "ssm, ssm-unfocused, psm, lispsm")) << error;
     EXPECT_FALSE(setByKey(s, "compare.methods=ssm,csm-psm", error));  // PSM per split is not offered

@@ -1,0 +1,213 @@
+// Sample distribution cascades (math/cascades_sdsm.h): split depths from the samples, the k-DOP
+// around a split's samples, and the cascade setup built on them (tight maps that still hold every
+// sample and its casters), with the fallbacks to the practical scheme.
+#include "math/cascades.h"
+
+#include "math/random.h"
+#include "shadow_setup_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shadowlab {
+namespace {
+
+using setup_test::sunFrom;
+using setup_test::terrain;
+
+ViewFrustum groundView() {
+    ViewFrustum v = setup_test::groundView({0, -0.1, -1});
+    v.zFar = 120.0;
+    return v;
+}
+
+double eyeDepth(const ViewFrustum& v, const glm::dvec3& p) { return glm::dot(p - v.eye, glm::normalize(v.forward)); }
+
+// A narrow street seen down its length: ground points 6 m either side of the axis, 4-80 m ahead,
+// kept where the camera sees them. The view frustum is 140 m wide at 80 m, so V_i n S holds far
+// more than the visible receivers.
+VisibleSamples streetSamples(const ViewFrustum& view, int count, std::uint64_t seed = 3) {
+    Rng rng(seed);
+    const glm::dmat4 vp = view.projectionMatrix() * view.viewMatrix();
+    VisibleSamples s;
+    s.pixelAngle = 2.0 * std::tan(0.5 * view.fovY) / 180.0;  // a 180-row pre-pass
+    while (int(s.points.size()) < count) {
+        const glm::dvec3 p{rng.uniform(-6, 6), 0.0, view.eye.z - rng.uniform(4, 80)};
+        const glm::dvec4 c = vp * glm::dvec4(p, 1.0);
+        if (c.w > 0 && std::abs(c.x) < c.w && std::abs(c.y) < c.w && std::abs(c.z) < c.w) s.points.push_back(p);
+    }
+    return s;
+}
+
+CascadeParams sdsmParams(SplitParameterization per, const VisibleSamples& samples) {
+    CascadeParams p;
+    p.splits = 4;
+    p.perSplit = per;
+    p.placement = SplitPlacement::Sdsm;
+    p.samples = samples;
+    return p;
+}
+
+void expectInClipCube(const glm::dmat4& m, const glm::dvec3& p, const std::string& what) {
+    ASSERT_GT((m * glm::dvec4(p, 1.0)).w, 0.0) << what;
+    const glm::dvec3 q = setup_test::ndc(m, p);
+    EXPECT_LE(std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}), 1.0 + 1e-4) << what;
+}
+
+TEST(SdsmSplits, LogarithmicOverTheSamplesDepthRange) {
+    const ViewFrustum view = groundView();
+    const glm::dvec3 f = glm::normalize(view.forward);
+    VisibleSamples s;
+    for (double z : {3.0, 7.0, 20.0, 48.0}) s.points.push_back(view.eye + f * z);
+    s.points.push_back(view.eye - f * 5.0);  // behind the eye: not a visible sample
+    const std::vector<double> z = sdsmSplitDepths(s, view.eye, f, view.zNear, view.zFar, 4);
+    ASSERT_EQ(z.size(), 5u);
+    EXPECT_NEAR(z.front(), 3.0, 1e-9);
+    EXPECT_NEAR(z.back(), 48.0, 1e-9);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(z[i + 1] / z[i], 2.0, 1e-9) << "equal far/near ratio per split";
+    // Clamped to the view's range.
+    const std::vector<double> clamped = sdsmSplitDepths(s, view.eye, f, view.zNear, 24.0, 2);
+    ASSERT_EQ(clamped.size(), 3u);
+    EXPECT_NEAR(clamped.back(), 24.0, 1e-9);
+}
+
+TEST(SdsmSplits, NoUsableSamplesGiveNoSplits) {
+    const ViewFrustum view = groundView();
+    const glm::dvec3 f = glm::normalize(view.forward);
+    EXPECT_TRUE(sdsmSplitDepths({}, view.eye, f, view.zNear, view.zFar, 4).empty());
+    VisibleSamples one;
+    one.points = {view.eye + f * 10.0, view.eye + f * 10.0};  // one depth: nothing to split
+    EXPECT_TRUE(sdsmSplitDepths(one, view.eye, f, view.zNear, view.zFar, 4).empty());
+    VisibleSamples bad;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    bad.points = {glm::dvec3(nan), view.eye - f};
+    EXPECT_TRUE(sdsmSplitDepths(bad, view.eye, f, view.zNear, view.zFar, 4).empty());
+    EXPECT_TRUE(sdsmSplitDepths(streetSamples(view, 50), view.eye, f, 1.0, 1.0, 4).empty());
+}
+
+TEST(SdsmBounds, TheKDopHoldsItsPointsAndCutsOffTheRest) {
+    Rng rng(11);
+    const glm::dvec3 light = glm::normalize(glm::dvec3(0.4, -1, 0.3)), forward{0, 0, -1};
+    std::vector<glm::dvec3> pts;
+    for (int i = 0; i < 200; ++i) pts.push_back({rng.uniform(-5, 5), rng.uniform(0, 1), rng.uniform(-40, -10)});
+    const std::vector<glm::dvec4> planes = sampleBoundPlanes(pts, light, forward, 0.0);
+    ASSERT_EQ(planes.size(), 20u);  // light, view and 8 directions across the light, two sides each
+    auto inside = [&](const glm::dvec3& p, double tol) {
+        for (const glm::dvec4& q : planes)
+            if (glm::dot(glm::dvec3(q), p) + q.w > tol) return false;
+        return true;
+    };
+    for (const glm::dvec3& p : pts) EXPECT_TRUE(inside(p, 1e-9));
+    EXPECT_FALSE(inside({20, 0.5, -20}, 0.0));   // beside the samples
+    EXPECT_FALSE(inside({0, 0.5, -60}, 0.0));    // beyond them along the view
+    EXPECT_FALSE(inside({0, -10, -20}, 0.0));    // under them, along the light
+    // A pad widens every slab by that much.
+    const std::vector<glm::dvec4> padded = sampleBoundPlanes(pts, light, forward, 2.0);
+    for (std::size_t i = 0; i < planes.size(); ++i) EXPECT_NEAR(padded[i].w, planes[i].w - 2.0, 1e-6);
+    // Nothing usable: no planes (the caller keeps V_i n S).
+    EXPECT_TRUE(sampleBoundPlanes({}, light, forward, 1.0).empty());
+    EXPECT_TRUE(sampleBoundPlanes({glm::dvec3(std::numeric_limits<double>::infinity())}, light, forward, 1.0).empty());
+    EXPECT_TRUE(sampleBoundPlanes(pts, glm::dvec3(0.0), forward, 1.0).empty());
+}
+
+TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
+    const ViewFrustum view = groundView();
+    const VisibleSamples samples = streetSamples(view, 4000);
+    for (const glm::dvec3 dir : {glm::dvec3(0.3, -1, 0.2), glm::dvec3(-1, -0.25, 0.1), glm::dvec3(0, -0.3, 1)})
+        for (SplitParameterization per : {SplitParameterization::Ssm, SplitParameterization::Lispsm}) {
+            const ShadowLight light = sunFrom(dir);
+            const CascadeSetup tight = computeCascadeSetup(view, light, terrain(), sdsmParams(per, samples));
+            ASSERT_TRUE(tight.error.empty()) << tight.error;
+            EXPECT_EQ(tight.placement, SplitPlacement::Sdsm);
+            EXPECT_TRUE(tight.placementNote.empty());
+            // The practical scheme with the same split depths (lambda 1 over the samples' range).
+            CascadeParams loose = sdsmParams(per, samples);
+            loose.placement = SplitPlacement::Lambda;
+            loose.lambda = 1.0;
+            double nearest = 1e300, farthest = 0.0;
+            for (const glm::dvec3& p : samples.points) {
+                nearest = std::min(nearest, eyeDepth(view, p));
+                farthest = std::max(farthest, eyeDepth(view, p));
+            }
+            loose.visibleNear = nearest;
+            loose.visibleFar = farthest;
+            const CascadeSetup wide = computeCascadeSetup(view, light, terrain(), loose);
+            ASSERT_EQ(tight.splits.size(), wide.splits.size());
+            int shrunk = 0;
+            for (std::size_t i = 0; i < tight.splits.size(); ++i) {
+                const CascadeSplit& split = tight.splits[i];
+                const std::string what = std::string(splitParameterizationName(per)) + " split " + std::to_string(i);
+                EXPECT_NEAR(split.zFar, wide.splits[i].zFar, 1e-9 * split.zFar) << what;
+                ASSERT_TRUE(split.setup.valid) << what;
+                EXPECT_TRUE(split.tightBounds) << what;
+                EXPECT_GT(split.samples, 0) << what;
+                const double zLow = i == 0 ? 0.0 : split.zNear;
+                const double zHigh = i + 1 == tight.splits.size() ? 1e300 : split.zFar;
+                for (const glm::dvec3& p : samples.points) {
+                    const double z = eyeDepth(view, p);
+                    if (z < zLow || z >= zHigh) continue;
+                    expectInClipCube(split.setup.worldToShadowClip, p, what + ": sample");
+                    // A caster 3 m toward the light from a sample still reaches the split's map.
+                    Aabb caster;
+                    caster.extend(p - light.direction * 3.0);
+                    EXPECT_TRUE(casterCanReach(split.setup, caster)) << what;
+                }
+                if (split.texelWorldSize < 0.7 * wide.splits[i].texelWorldSize) ++shrunk;
+            }
+            EXPECT_GE(shrunk, 2) << splitParameterizationName(per) << ": the street's splits get smaller texels";
+        }
+}
+
+TEST(SdsmCascades, FallsBackToLambdaAndSaysWhy) {
+    const ViewFrustum view = groundView();
+    const ShadowLight light = sunFrom({0.3, -1, 0.2});
+    CascadeParams lambda = sdsmParams(SplitParameterization::Ssm, {});
+    lambda.placement = SplitPlacement::Lambda;
+    const CascadeSetup reference = computeCascadeSetup(view, light, terrain(), lambda);
+    // No samples (no pre-pass of this view).
+    const CascadeSetup none = computeCascadeSetup(view, light, terrain(), sdsmParams(SplitParameterization::Ssm, {}));
+    EXPECT_EQ(none.placement, SplitPlacement::Lambda);
+    EXPECT_NE(none.placementNote.find("no pre-pass"), std::string::npos);
+    ASSERT_EQ(none.splits.size(), reference.splits.size());
+    for (std::size_t i = 0; i < none.splits.size(); ++i) {
+        EXPECT_EQ(none.splits[i].setup.worldToShadowClip, reference.splits[i].setup.worldToShadowClip);
+        EXPECT_FALSE(none.splits[i].tightBounds);
+    }
+    // Stable splits keep their view-independent bound.
+    const CascadeSetup stable =
+        computeCascadeSetup(view, light, terrain(), sdsmParams(SplitParameterization::StableSsm, streetSamples(view, 100)));
+    EXPECT_EQ(stable.placement, SplitPlacement::Lambda);
+    EXPECT_NE(stable.placementNote.find("stable"), std::string::npos);
+}
+
+TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
+    // Samples only at 10-12 m and 60 m: the log splits put none into the middle ones, which then
+    // keep V_i n S rather than an empty map.
+    const ViewFrustum view = groundView();
+    const glm::dvec3 f = glm::normalize(view.forward);
+    VisibleSamples s;
+    s.pixelAngle = 0.005;
+    for (double z : {10.0, 11.0, 12.0, 60.0}) {
+        glm::dvec3 p = view.eye + f * z;
+        p.y = 1.0;  // above the ground, inside S
+        s.points.push_back(p);
+    }
+    const CascadeSetup cs =
+        computeCascadeSetup(view, sunFrom({0.3, -1, 0.2}), terrain(), sdsmParams(SplitParameterization::Ssm, s));
+    ASSERT_EQ(cs.placement, SplitPlacement::Sdsm);
+    int empty = 0;
+    for (const CascadeSplit& split : cs.splits) {
+        EXPECT_TRUE(split.setup.valid);
+        if (split.samples == 0) {
+            ++empty;
+            EXPECT_FALSE(split.tightBounds);
+        }
+    }
+    EXPECT_GE(empty, 1);
+}
+
+}  // namespace
+}  // namespace shadowlab
