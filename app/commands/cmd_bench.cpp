@@ -197,27 +197,27 @@ void runScaling(const BenchOptions& options) {
     std::string error;
     ScalingBenchOptions scaling = options.scalingOptions;
     LoadOptions load;
-    if (!applyLoadLimits(load, options.limits, error)) fail(error, 2);
+    if (!applyLoadLimits(load, options.limits, error)) failCommand("bench", error, 2);
     scaling.limits = load.limits;
     for (double s : scaling.scales)
-        if (!(s >= 1.0 && s <= 64.0)) fail("--scales expects world scales from 1 to 64", 2);
+        if (!(s >= 1.0 && s <= 64.0)) failCommand("bench", "--scales expects world scales from 1 to 64", 2);
     auto context = HeadlessContext::create(error);
-    if (!context) fail(error);
+    if (!context) failCommand("bench", error);
     gl::DebugLog debugLog;
     gl::installDebugOutput(debugLog);
     std::vector<ScalingRow> rows;
-    if (!runScalingBench(scaling, options.out, rows, error)) fail(error);
-    if (debugLog.errorCount > 0) fail(std::to_string(debugLog.errorCount) + " OpenGL error(s) while benchmarking");
+    if (!runScalingBench(scaling, options.out, rows, error)) failCommand("bench", error);
+    if (debugLog.errorCount > 0) failCommand("bench", std::to_string(debugLog.errorCount) + " OpenGL error(s) while benchmarking");
     std::cout << "wrote " << (std::filesystem::path(options.out) / "scaling.csv").string() << "\n";
     if (!options.noCharts) {
-        if (!drawCharts(options.out, error, "scaling.csv")) fail(error);
+        if (!drawCharts(options.out, error, "scaling.csv")) failCommand("bench", error);
         std::cout << "wrote " << (std::filesystem::path(options.out) / "scaling.png").string() << "\n";
     }
 }
 
 void runBench(const BenchOptions& options) {
     if (options.scaling) {
-        if (options.quick || !options.spec.empty()) fail("--scaling takes no SPEC.json and no --quick", 2);
+        if (options.quick || !options.spec.empty()) failCommand("bench", "--scaling takes no SPEC.json and no --quick", 2);
         return runScaling(options);
     }
     BenchSpec spec;

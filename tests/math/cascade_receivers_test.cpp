@@ -6,12 +6,14 @@
 #include "math/cascades.h"
 #include "math/lispsm_search.h"
 
-#include <numbers>
+#include "shadow_setup_fixtures.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace shadowlab {
 namespace {
@@ -75,7 +77,7 @@ std::vector<SurfacePoint> castGrid(const ViewFrustum& v, int gx, int gy) {
     return out;
 }
 
-double eyeDepth(const ViewFrustum& v, const glm::dvec3& p) { return glm::dot(p - v.eye, glm::normalize(v.forward)); }
+using setup_test::eyeDepth;
 
 CascadeParams streetCascade(const std::vector<SurfacePoint>& coarse, const std::vector<SurfacePoint>& fine,
                             const ViewFrustum& v) {

@@ -4,10 +4,10 @@
 
 #include "math/random.h"
 
-#include <numbers>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace shadowlab {
 namespace {

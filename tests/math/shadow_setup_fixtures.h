@@ -34,6 +34,9 @@ inline ViewFrustum groundView(glm::dvec3 forward = {0, 0, -1}) {
     v.zFar = 80.0;
     return v;
 }
+// Depth of p along the view direction (what the cascade splits are placed in).
+inline double eyeDepth(const ViewFrustum& v, const glm::dvec3& p) { return glm::dot(p - v.eye, glm::normalize(v.forward)); }
+
 inline ShadowLight sunFrom(glm::dvec3 travel) {
     ShadowLight l;
     l.kind = ShadowLightKind::Directional;
