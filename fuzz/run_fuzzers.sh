@@ -8,7 +8,8 @@
 # exit 1 — copy the input into tests/fuzz_regressions/TARGET/ so CTest replays it from then on.
 # Usage: fuzz/run_fuzzers.sh [RUNS=1000000] [BUILD=build-fuzz] [TARGETS="scene settings"]
 # Environment: BUILD_JOBS (default nproc), SHADOWLAB_FUZZ_FINDS (default: fuzz-finds beside the
-# scenes folder), MAX_SECONDS (stop a target after that long even short
+# scenes folder), TIMEOUT_SECONDS (libFuzzer's -timeout, wall clock; default 1: raise it on a
+# machine so loaded that a 20 ms input is descheduled for a second), MAX_SECONDS (stop a target after that long even short
 # of RUNS; default 0 = no limit), SHADOWLAB_SHARED_SCENES, CMAKE_CXX_COMPILER_LAUNCHER (ccache).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -47,7 +48,7 @@ for target in $targets; do
   start=$(date +%s)
   # One process (no -jobs: with -jobs libFuzzer moves the output into fuzz-N.log files).
   rc=0
-  "$build/fuzz/fuzz_$target" "$build/corpus/$target" -runs="$runs" -max_total_time="${MAX_SECONDS:-0}" -timeout=1 -rss_limit_mb=2048 \
+  "$build/fuzz/fuzz_$target" "$build/corpus/$target" -runs="$runs" -max_total_time="${MAX_SECONDS:-0}" -timeout="${TIMEOUT_SECONDS:-1}" -rss_limit_mb=2048 \
     -malloc_limit_mb=256 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$build/fuzz-artifacts/${target}-" >"$log" 2>&1 || rc=$?
   grep -E "^stat::|^Done|ERROR:|SUMMARY:|^artifact_prefix|Test unit written" "$log" || true
