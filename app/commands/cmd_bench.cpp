@@ -16,11 +16,11 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #ifndef SHADOWLAB_SHARED_SCENES_DIR
 #define SHADOWLAB_SHARED_SCENES_DIR ""
