@@ -133,7 +133,14 @@ double animationDuration(const Animation& animation) {
     return d;
 }
 
-double sceneAnimationDuration(const Scene& scene) {
+int resolveClip(const Scene& scene, int clip) {
+    if (clip < 0) return kAllClips;
+    return std::size_t(clip) < scene.animations.size() ? clip : 0;
+}
+
+double sceneAnimationDuration(const Scene& scene, int clip) {
+    clip = resolveClip(scene, clip);
+    if (clip != kAllClips && !scene.animations.empty()) return animationDuration(scene.animations[std::size_t(clip)]);
     double d = 0.0;
     for (const Animation& a : scene.animations) d = std::max(d, animationDuration(a));
     return d;
@@ -145,10 +152,13 @@ double loopTime(double t, double duration) {
     return r < 0.0 ? r + duration : r;
 }
 
-int applyAnimations(Scene& scene, double t) {
+int applyAnimations(Scene& scene, double t, int clip) {
     int applied = 0;
     std::vector<float> scratch;
-    for (const Animation& animation : scene.animations) {
+    clip = resolveClip(scene, clip);
+    for (std::size_t a = 0; a < scene.animations.size(); ++a) {
+        if (clip != kAllClips && a != std::size_t(clip)) continue;
+        const Animation& animation = scene.animations[a];
         const double duration = animationDuration(animation);
         // The end of the loop shows the last key rather than jumping back to the first one.
         const double local =
@@ -186,9 +196,30 @@ int applyAnimations(Scene& scene, double t) {
     return applied;
 }
 
-bool animateScene(Scene& scene, double t) {
+RestPose captureRestPose(const Scene& scene) {
+    RestPose rest;
+    for (const Node& node : scene.nodes) {
+        rest.translation.push_back(node.translation);
+        rest.rotation.push_back(node.rotation);
+        rest.scale.push_back(node.scale);
+        rest.weights.push_back(node.weights);
+    }
+    return rest;
+}
+
+void restorePose(Scene& scene, const RestPose& rest) {
+    for (std::size_t i = 0; i < std::min(scene.nodes.size(), rest.translation.size()); ++i) {
+        Node& node = scene.nodes[i];
+        node.translation = rest.translation[i];
+        node.rotation = rest.rotation[i];
+        node.scale = rest.scale[i];
+        node.weights = rest.weights[i];
+    }
+}
+
+bool animateScene(Scene& scene, double t, int clip) {
     if (scene.animations.empty()) return false;
-    applyAnimations(scene, t);
+    applyAnimations(scene, t, clip);
     updateWorldTransforms(scene);
     return true;
 }

@@ -26,21 +26,40 @@ bool sampleWeights(const AnimationChannel& channel, double t, std::vector<float>
 
 // Length of an animation: its last key time over all channels (Animation::duration when larger).
 double animationDuration(const Animation& animation);
-// Longest animation of the scene; 0 when it has none.
-double sceneAnimationDuration(const Scene& scene);
+// Which of the scene's animations play (settings key animation.clip): kAllClips plays every one
+// at once, each looped over its own length; an index plays that one alone. An index past the last
+// animation plays the first (sceneNotices says so).
+constexpr int kAllClips = -1;
+// The animation index `clip` selects in this scene: kAllClips, or a valid index.
+int resolveClip(const Scene& scene, int clip);
+
+// Longest animation of the scene (of the chosen clip); 0 when it has none.
+double sceneAnimationDuration(const Scene& scene, int clip = kAllClips);
 
 // The time inside one loop of a `duration` long animation played since 0 (t mod duration,
 // non-negative); 0 for a zero duration.
 double loopTime(double t, double duration);
 
-// Writes every channel of every animation at scene time `t` (each animation looped over its own
-// duration) into the nodes' translation/rotation/scale. Channels that target a missing node or a
-// node given by a matrix (the spec forbids animating those) are skipped. Returns the number of
-// channels applied. Does not update world matrices: see animateScene.
-int applyAnimations(Scene& scene, double t);
+// Writes every channel of the chosen animations at scene time `t` (each animation looped over its
+// own duration) into the nodes' translation/rotation/scale and morph weights. Channels that target a
+// missing node or a node given by a matrix (the spec forbids animating those) are skipped. Returns
+// the number of channels applied. Does not update world matrices: see animateScene.
+int applyAnimations(Scene& scene, double t, int clip = kAllClips);
+
+// The nodes' local transforms and morph weights as loaded: a node that the next clip does not
+// animate must go back to them rather than keep the last clip's pose.
+struct RestPose {
+    std::vector<glm::vec3> translation, scale;
+    std::vector<glm::quat> rotation;
+    std::vector<std::vector<float>> weights;
+};
+RestPose captureRestPose(const Scene& scene);
+// Puts the captured values back (no world matrices: animateScene follows) into the nodes captured;
+// nodes added since (the ground plane's) are left alone.
+void restorePose(Scene& scene, const RestPose& rest);
 
 // applyAnimations + updateWorldTransforms (world matrices, instances, lights, cameras, bounds).
 // Returns false (scene untouched) when the scene has no animation.
-bool animateScene(Scene& scene, double t);
+bool animateScene(Scene& scene, double t, int clip = kAllClips);
 
 }  // namespace shadowlab

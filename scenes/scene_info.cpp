@@ -1,4 +1,5 @@
 // describeScene: the report `shadowlab info` prints (counts, lights, cameras, bounds, warnings).
+#include "scenes/animation.h"
 #include "scenes/gltf_loader.h"
 
 #include <cmath>
@@ -80,11 +81,13 @@ std::string describeScene(const Scene& scene) {
             << vec(glm::dvec3(c.cameraToWorld[3])) << ", looking "
             << vec(-glm::normalize(glm::dvec3(c.cameraToWorld[2]))) << "\n";
     }
-    out << "animations: " << scene.animations.size() << "\n";
+    out << "animations: " << scene.animations.size();
+    if (scene.animations.size() > 1) out << " (one plays: --set animation.clip=N, -1 all at once; default 0)";
+    out << "\n";
     for (std::size_t i = 0; i < scene.animations.size(); ++i) {
         const Animation& a = scene.animations[i];
         out << "  [" << i << "] " << nameOr(a.name) << " " << a.channels.size() << " channels, "
-            << number(a.duration) << " s\n";
+            << number(animationDuration(a)) << " s\n";
     }
     if (scene.bounds.empty())
         out << "bounds: empty\n";

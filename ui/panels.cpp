@@ -355,6 +355,34 @@ bool drawFilterPanel(Settings& s) {
     return changed;
 }
 
+namespace {
+
+// The glTF animations by name (a file may hold several clips of one character: Survey, Walk, Run).
+bool drawClipCombo(AnimationSettings& a, const AnimationInfo& info) {
+    if (info.clips.size() < 2) return false;
+    auto label = [&](int i) {
+        if (i < 0) return std::string("all at once");
+        const AnimationInfo::Clip& c = info.clips[std::size_t(i)];
+        return std::to_string(i) + ": " + (c.name.empty() ? "(unnamed)" : c.name) + " (" + formatNumber(c.duration, 3) +
+               " s)";
+    };
+    const int shown = a.clip < int(info.clips.size()) ? a.clip : 0;  // past the last: the first plays
+    bool changed = false;
+    if (ImGui::BeginCombo("clip", label(shown).c_str())) {
+        for (int i = -1; i < int(info.clips.size()); ++i)
+            if (ImGui::Selectable(label(i).c_str(), i == shown) && i != a.clip) {
+                a.clip = i;
+                changed = true;
+            }
+        ImGui::EndCombo();
+    }
+    tip("Which glTF animation plays (animation.clip). A file may hold several clips of one character; all at once "
+        "blends them as glTF allows, which for a character's clips is rarely meant.");
+    return changed;
+}
+
+}  // namespace
+
 bool drawAnimationPanel(Settings& s, const AnimationInfo& info) {
     bool changed = false;
     AnimationSettings& a = s.animation;
@@ -372,18 +400,22 @@ bool drawAnimationPanel(Settings& s, const AnimationInfo& info) {
     changed |= sliderDouble("speed##anim", a.speed, -4.0, 4.0, "%.2fx",
                             "Playback rate of the scene clock (moving casters and light: the dynamic environments of "
                             "Scherzer, robust shadow maps 1.1; Stamminger & Drettakis 6, Fig. 9).");
-    if (info.duration > 0.0) {
+    changed |= drawClipCombo(a, info);
+    // The loop the time slider scrubs: the chosen clip's, or the longest when all play.
+    const bool oneClip = a.clip >= 0 && !info.clips.empty();
+    const double duration = oneClip ? info.clips[std::size_t(a.clip) < info.clips.size() ? a.clip : 0].duration
+                                    : info.duration;
+    if (duration > 0.0) {
         // Scrub inside the current loop; the clock itself keeps running so the sun keeps turning.
-        const double loops = std::floor(a.time / info.duration);
-        double inLoop = a.time - loops * info.duration;
-        if (sliderDouble("time", inLoop, 0.0, info.duration, "%.3f s",
+        const double loops = std::floor(a.time / duration);
+        double inLoop = a.time - loops * duration;
+        if (sliderDouble("time", inLoop, 0.0, duration, "%.3f s",
                          "Scrub the glTF animations (translation / rotation / scale channels; linear, step, "
                          "cubic-spline interpolation). Saved with the view, so headless renders match.")) {
-            a.time = std::max(0.0, loops * info.duration + inLoop);
+            a.time = std::max(0.0, loops * duration + inLoop);
             changed = true;
         }
-        ImGui::TextDisabled("%d animation(s), %d channel(s), loop %.3f s", info.animations, info.channels,
-                            info.duration);
+        ImGui::TextDisabled("%d animation(s), %d channel(s), loop %.3f s", info.animations, info.channels, duration);
     } else {
         changed |= dragDouble("time", a.time, 0.05f, 0.0, 1e6, "%.2f s",
                               "Scene clock (this scene has no glTF animation; it drives the animated sun).");

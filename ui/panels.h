@@ -37,6 +37,11 @@ struct AnimationInfo {
     double duration = 0.0;  // longest glTF animation, seconds (0: none)
     int animations = 0;
     int channels = 0;
+    struct Clip {
+        std::string name;  // may be empty
+        double duration = 0.0;
+    };
+    std::vector<Clip> clips;  // one per glTF animation (animation.clip picks one, -1 all)
 };
 // Animation panel: play / pause, speed, scrub (the scene clock also drives the animated sun).
 bool drawAnimationPanel(Settings& settings, const AnimationInfo& info);

@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #ifndef SHADOWLAB_SHARED_SCENES_DIR
 #define SHADOWLAB_SHARED_SCENES_DIR ""
@@ -118,11 +119,23 @@ void runCanonical(Renderer& renderer, BenchResults& results) {
     }
 }
 
-// glTF animations posed at a case's animation.time (`--set animation.time=T` in a variant), the
-// renderer's instances and the truth's geometry with them.
-void poseAt(Scene& scene, double time, Renderer& renderer, std::unique_ptr<RayScene>& rays, double& posedTime) {
-    if (time == posedTime || !animateScene(scene, time)) return;
-    posedTime = time;
+// The pose the scene is in: the loaded rest pose until a case poses it.
+struct ScenePose {
+    RestPose rest;
+    double time = -1.0;
+    std::optional<int> clip;
+};
+
+// glTF animations posed at a case's animation.time and clip (`--set animation.time=T` or
+// `animation.clip=N` in a variant), the renderer's instances and the truth's geometry with them.
+void poseAt(Scene& scene, const AnimationSettings& animation, Renderer& renderer, std::unique_ptr<RayScene>& rays,
+            ScenePose& posed) {
+    if (scene.animations.empty() || (animation.time == posed.time && posed.clip == animation.clip)) return;
+    // Another clip: the nodes it does not animate go back to their rest pose.
+    if (posed.clip && *posed.clip != animation.clip) restorePose(scene, posed.rest);
+    animateScene(scene, animation.time, animation.clip);
+    posed.time = animation.time;
+    posed.clip = animation.clip;
     renderer.updateInstances(scene);
     if (!rays) return;
     std::string error;
@@ -145,7 +158,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
         info.bvhSeconds = rays->buildSeconds();
     }
     results.scenes.push_back(info);
-    double posedTime = -1.0;  // the loaded (rest) pose
+    ScenePose posed{captureRestPose(*scene)};
     const std::vector<BenchCamera> cameras = entry.cameras.empty() ? std::vector<BenchCamera>{{"first", 0, false}}
                                                                      : entry.cameras;
     RenderTarget target(spec.width, spec.height);
@@ -179,7 +192,7 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
                         c.layerSize = settings.shadowMapSize;
                         c.layers = settings.csm.enabled ? settings.csm.splits : 1;
                         c.mapTexels = shadowMapTexels(settings);
-                        poseAt(*scene, settings.animation.time, renderer, rays, posedTime);
+                        poseAt(*scene, settings.animation, renderer, rays, posed);
                         timeCase(renderer, *scene, settings, target, spec.warmup, spec.repeats, c);
                         const MeasureFrame frame = measureView(renderer, *scene, settings, spec.width, spec.height);
                         c.accuracy = analyseFrame(frame, rays.get(), truthLight(*scene, settings, settings.animation.time));

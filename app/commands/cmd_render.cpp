@@ -182,7 +182,7 @@ void runRender(RenderOptions options) {
     Settings settings = initialSettings(*scene);
     if (!options.camera.empty() && !applySceneCamera(*scene, options.camera, settings, error)) failCommand("render", error);
     if (!applyOverrides(settings, options.overrides, error)) failCommand("render", error);
-    for (const std::string& notice : sceneNotices(settings, scene->lights.size()))
+    for (const std::string& notice : sceneNotices(settings, scene->lights.size(), scene->animations.size()))
         std::cerr << "shadowlab render: note: " << notice << "\n";
 
     auto context = HeadlessContext::create(error);
@@ -193,7 +193,7 @@ void runRender(RenderOptions options) {
     auto renderer = Renderer::create(error);
     if (!renderer) failCommand("render", error);
     // The view's time poses glTF animations exactly as the viewer showed them.
-    animateScene(*scene, settings.animation.time);
+    animateScene(*scene, settings.animation.time, settings.animation.clip);
     if (settings.display.groundPlane) addGroundPlane(*scene);
     renderer->setScene(*scene);
     std::unique_ptr<RayScene> rays;

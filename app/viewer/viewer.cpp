@@ -20,6 +20,7 @@
 #include "scenes/animation.h"
 #include "settings/method_choice.h"
 #include "ground_probe.h"
+#include "viewer/viewer_clock.h"
 #include "viewer/viewer_frame.h"
 #include "viewer/viewer_open.h"
 #include "viewer/viewer_options.h"
@@ -265,8 +266,6 @@ void updateTitle(GLFWwindow* window, const ViewerState& state, std::string& wind
     if (title != windowTitle) glfwSetWindowTitle(window, (windowTitle = title).c_str());
 }
 
-bool animating(const ViewerState& state);
-
 // Adds or removes the ground plane when display.groundPlane changed (and re-uploads the scene).
 void syncGroundPlane(ViewerState& state, Renderer& renderer) {
     if (!state.scene || state.settings.display.groundPlane == state.groundPlane.has_value()) return;
@@ -281,23 +280,6 @@ void syncGroundPlane(ViewerState& state, Renderer& renderer) {
     renderer.setScene(*state.scene, true);  // a re-upload streams its textures too
     state.texturesTotal = state.texturesPending = state.scene->textures.size();
     state.status.sceneTriangles = state.scene->triangleCount();
-}
-
-// Advances the scene clock (glTF animations, the animated sun) and poses the scene. A clock that
-// moves nothing stands still, so an idle window stays idle.
-void advanceClock(ViewerState& state, Renderer& renderer, double dt) {
-    Settings& s = state.settings;
-    if (animating(state)) s.animation.time = std::max(0.0, s.animation.time + dt * s.animation.speed);
-    if (s.animation.time != state.posedTime && animateScene(*state.scene, s.animation.time))
-        renderer.updateInstances(*state.scene);  // moving casters: new instance matrices
-    state.posedTime = s.animation.time;
-}
-
-// Whether something on screen changes without input: then the loop keeps drawing.
-bool animating(const ViewerState& state) {
-    const Settings& s = state.settings;
-    if (!state.scene || !s.animation.playing) return false;
-    return !state.scene->animations.empty() || (s.light.animateSun && s.light.source == LightSource::Sun);
 }
 
 }  // namespace
@@ -365,16 +347,22 @@ void runViewer(const ViewerOptions& options) {
     double fps = 0.0;
     std::string windowTitle;
     int framesOwed = kSettleFrames;
+    bool animationShows = true;  // the last step of a playing animation changed the picture
     for (int frame = 0; !glfwWindowShouldClose(window.get());) {
         // Idle: wait for an event (a load finishing posts one) instead of redrawing an unchanged
         // frame; a software rasteriser would spend a whole core on it.
-        const bool continuous = options.frames > 0 || animating(state) || state.fly.anyHeld() ||
-                                state.drag.target() != DragTarget::None || state.uploadNext ||
-                                state.texturesPending > 0 ||
-                                renderer->readbackPending();  // the visible-depth result arrives next frame
-        if (continuous || framesOwed > 0) glfwPollEvents();
+        // A playing animation draws only while a step changes the picture (viewer_clock.h); off
+        // screen it is posed at kOffscreenAnimationPollSeconds between waits.
+        const bool playing = animating(state);
+        const bool inputOrLoad = options.frames > 0 || state.fly.anyHeld() ||
+                                 state.drag.target() != DragTarget::None || state.uploadNext || state.texturesPending > 0;
+        // The visible-depth result arrives next frame.
+        const bool readbackOnly = !inputOrLoad && renderer->readbackPending();
+        const bool mustDraw = inputOrLoad || readbackOnly;
+        if (mustDraw || framesOwed > 0 || (playing && animationShows)) glfwPollEvents();
         else if (state.load || ui::notificationsFading(state.status))
             glfwWaitEventsTimeout(0.1);  // the progress bar moves, a message fades
+        else if (playing) glfwWaitEventsTimeout(kOffscreenAnimationPollSeconds);
         else glfwWaitEvents();
         std::vector<InputEvent> input = events.input.drain();
         if (!input.empty() || !events.droppedFiles.empty() || std::exchange(events.exposed, false))
@@ -407,6 +395,18 @@ void runViewer(const ViewerOptions& options) {
         state.uploadNext = state.load && state.load->done();
         for (const std::string& file : std::exchange(events.droppedFiles, {})) openFile(state, file);
         reloadForSceneIndex(state);
+        // Nothing but the animation asks for a frame: pose on the CPU, draw only what shows.
+        double clockDt = dt;
+        bool holdPose = false;
+        if (playing && !inputOrLoad && framesOwed == 0 && input.empty() && !state.uploadNext && !state.load &&
+            !ui::notificationsFading(state.status) && state.scene) {
+            animationShows = stepClockShows(state, dt);
+            clockDt = 0.0;  // stepped already
+            // A readback in flight is taken by one more frame at the pose the GPU has, so the scene
+            // it measured is still the scene (a new pose would start another readback each frame).
+            if (!animationShows && !readbackOnly) continue;
+            holdPose = !animationShows;
+        }
 
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(window.get(), &fbWidth, &fbHeight);
@@ -425,6 +425,7 @@ void runViewer(const ViewerOptions& options) {
         if (state.scene) state.controller.apply(state.settings.camera, cameraInput(state));
         updateTitle(window.get(), state, windowTitle);
 
+        double timeBeforeClock = state.settings.animation.time;
         const auto cpuStart = Clock::now();
         std::vector<ui::Caption> captions;
         ViewsResult views;
@@ -432,7 +433,8 @@ void runViewer(const ViewerOptions& options) {
         glViewport(0, 0, std::max(1, fbWidth), std::max(1, fbHeight));
         if (state.scene && fbWidth > 0 && fbHeight > 0) {
             syncGroundPlane(state, *renderer);
-            advanceClock(state, *renderer, dt);
+            timeBeforeClock = state.settings.animation.time;
+            advanceClock(state, *renderer, clockDt, !holdPose);
             if (abComposites(state.ab)) {
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 const GLfloat clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
@@ -445,6 +447,8 @@ void runViewer(const ViewerOptions& options) {
             }
             state.stats = views.stats;
             state.paneStats = views.paneStats;
+            watchFrame(state, panes.front().settings, int(panes.size()),
+                       double(layout.views[0].width) / std::max(1, layout.views[0].height), *renderer);
             if (std::exchange(state.accuracy.requested, false))
                 measureForPanel(state.accuracy, *renderer, *state.scene, state.settings, layout.views[0].width,
                                 layout.views[0].height);
@@ -500,7 +504,10 @@ void runViewer(const ViewerOptions& options) {
         // The rate the viewer draws at: the frame's own time, not counting an idle wait for events.
         const double frameSeconds = std::chrono::duration<double>(Clock::now() - now).count();
         if (frameSeconds > 0.0) fps = fps == 0.0 ? 1.0 / frameSeconds : fps * 0.8 + 0.2 / frameSeconds;
-        if (!(state.settings == before)) {
+        // The clock's own step owes no settle frames (a playing animation would never settle).
+        Settings changed = state.settings;
+        changed.animation.time = timeBeforeClock;
+        if (!(changed == before)) {
             framesOwed = kSettleFrames;
             noteSceneNotices(state);
         }

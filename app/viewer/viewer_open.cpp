@@ -19,6 +19,7 @@ namespace {
 ui::AnimationInfo animationInfo(const Scene& scene) {
     ui::AnimationInfo info;
     info.duration = sceneAnimationDuration(scene);
+    for (const Animation& a : scene.animations) info.clips.push_back({a.name, animationDuration(a)});
     info.animations = int(scene.animations.size());
     for (const Animation& a : scene.animations) info.channels += int(a.channels.size());
     return info;
@@ -78,7 +79,7 @@ void addNotices(ui::ViewerStatus& status, const std::vector<std::string>& change
 
 void noteSceneNotices(ViewerState& state) {
     if (!state.scene) return;
-    std::vector<std::string> now = sceneNotices(state.settings, state.scene->lights.size());
+    std::vector<std::string> now = sceneNotices(state.settings, state.scene->lights.size(), state.scene->animations.size());
     for (std::string& n : chooseCasters(*state.scene, state.settings.casters, state.backdrops).notices)
         now.push_back(std::move(n));
     std::vector<std::string> fresh;
@@ -179,8 +180,10 @@ void finishSceneLoad(ViewerState& state, Renderer& renderer, const SettingsOverr
         state.status.lastError.clear();
     }
     // The pose at the view's time, so a loaded view shows the frame it was saved at.
-    animateScene(scene, state.settings.animation.time);
+    state.restPose = captureRestPose(scene);
+    animateScene(scene, state.settings.animation.time, state.settings.animation.clip);
     state.posedTime = state.settings.animation.time;
+    state.posedClip = state.settings.animation.clip;
     const auto uploadStart = std::chrono::steady_clock::now();
     renderer.setScene(scene, true);  // geometry now, the textures over the next frames
     state.backdrops = renderer.backdrops();

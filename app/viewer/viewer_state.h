@@ -4,7 +4,9 @@
 #include "viewer/camera_controller.h"
 #include "ground_probe.h"
 #include "file_panel.h"
+#include "frame/animation_redraw.h"
 #include "frame/ground_plane.h"
+#include "scenes/animation.h"
 #include "panels.h"
 #include "viewer/scene_loading.h"
 #include "stats_panel.h"
@@ -35,6 +37,10 @@ struct ViewerState {
     bool panelCollapsed = false;  // the control window folded to its title bar
     bool screenshotRequested = false;
     double posedTime = 0.0;
+    int posedClip = 0;
+    RestPose restPose;  // of the scene as loaded: another clip starts from it
+    bool poseUploadPending = false;  // posed off screen (viewer_clock.h); the renderer has not seen it
+    WatchedVolumes watched;          // of the last drawn frame (viewer_clock.h: watchFrame)
     FrameStats stats;
     std::vector<FrameStats> paneStats;  // per split view, left to right
     bool splitShown = false;            // split compare was on last frame

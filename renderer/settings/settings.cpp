@@ -80,7 +80,7 @@ void from_json(const json& j, MethodChoice& choice) {
         throw json::type_error::create(302, std::string("expected one of ") + methodChoiceNames(), &j);
 }
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CompareSettings, count, methods)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationSettings, playing, time, speed, clip)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SkipSettings, reuseShadowMap, hierarchicalCulling, asyncDepthReadback,
                                    groupedDraws, shaderVariants, clusterCulling)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneSettings, index)

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -190,6 +191,9 @@ struct AnimationSettings {
     bool playing = true;
     double time = 0.0;  // seconds
     double speed = 1.0;
+    // Which glTF animation plays (an index into the file's animations; -1: all at once, as glTF
+    // allows but a character's clips Survey/Walk/Run blended make no sense, hence the first).
+    int clip = 0;
     bool operator==(const AnimationSettings&) const = default;
 };
 
@@ -275,8 +279,10 @@ std::string settingChoices(std::string_view key);
 bool settingRange(std::string_view key, double& lo, double& hi);
 
 // Settings that the scene makes meaningless, as notices: light.sceneLight beyond the scene's
-// lights, light.animateSun while the light comes from the scene.
-std::vector<std::string> sceneNotices(const Settings& settings, std::size_t sceneLights);
+// lights, light.animateSun while the light comes from the scene, animation.clip beyond the scene's
+// animations (not checked when sceneAnimations is SIZE_MAX).
+std::vector<std::string> sceneNotices(const Settings& settings, std::size_t sceneLights,
+                                      std::size_t sceneAnimations = SIZE_MAX);
 
 const char* methodName(ShadowMethod method);  // "ssm", "ssm-unfocused", "psm", "lispsm"
 bool parseMethod(std::string_view name, ShadowMethod& method);

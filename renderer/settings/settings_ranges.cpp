@@ -70,6 +70,7 @@ const NumberSetting kNumbers[] = {
     INTEGER("compare.count", compare.count, 1, 3),
     REAL("animation.time", animation.time, 0.0, 1e7),
     REAL("animation.speed", animation.speed, -100.0, 100.0),
+    INTEGER("animation.clip", animation.clip, -1, 1 << 20),  // past the scene's last: sceneNotices
     REAL("display.exposureEv", display.exposureEv, -16.0, 16.0),
     INTEGER("display.msaaSamples", display.msaaSamples, 1, 8),  // and 1, 2, 4 or 8, below
     REAL("overlays.depthWindowLow", overlays.depthWindowLow, 0.0, 1.0),
@@ -259,7 +260,7 @@ std::vector<SettingDescription> describeSettings() {
     return out;
 }
 
-std::vector<std::string> sceneNotices(const Settings& s, std::size_t sceneLights) {
+std::vector<std::string> sceneNotices(const Settings& s, std::size_t sceneLights, std::size_t sceneAnimations) {
     std::vector<std::string> notices;
     const bool sceneLight = s.light.source == LightSource::Scene;
     if (sceneLight && std::size_t(s.light.sceneLight) >= sceneLights)
@@ -268,6 +269,10 @@ std::vector<std::string> sceneNotices(const Settings& s, std::size_t sceneLights
     else if (sceneLight && s.light.animateSun)
         notices.push_back("light.animateSun has no effect while the light comes from the scene (light.source = scene); "
                           "set light.source=sun to animate the sun");
+    if (sceneAnimations != SIZE_MAX && sceneAnimations > 0 && s.animation.clip >= 0 &&
+        std::size_t(s.animation.clip) >= sceneAnimations)
+        notices.push_back("animation.clip = " + std::to_string(s.animation.clip) + ", but the scene has " +
+                          std::to_string(sceneAnimations) + " animation(s): the first plays");
     return notices;
 }
 

@@ -192,6 +192,31 @@ TEST(Skinning, SamplesOpenWithoutIgnoredWarningsAndBoundsHoldThePose) {
     }
 }
 
+// Fox has three clips (Survey, Walk, Run) that animate the same joints: one clip at a time, the
+// same time in Walk and in Run is another pose (other skinned bounds), all at once is a third, and
+// going back to a clip from the rest pose gives exactly its pose again.
+TEST(Skinning, FoxClipsPlayOneAtATime) {
+    Scene s = loadShared("Fox/glTF-Binary/Fox.glb");
+    if (s.instances.empty()) GTEST_SKIP() << "shared scenes missing";
+    ASSERT_EQ(s.animations.size(), 3u);
+    const RestPose rest = captureRestPose(s);
+    auto boundsAt = [&](int clip) {
+        restorePose(s, rest);
+        animateScene(s, 0.5, clip);
+        return s.bounds;
+    };
+    const Aabb walk = boundsAt(1), run = boundsAt(2), all = boundsAt(kAllClips), walkAgain = boundsAt(1);
+    auto differ = [](const Aabb& a, const Aabb& b) { return glm::length(a.min - b.min) + glm::length(a.max - b.max); };
+    const double size = glm::length(walk.extent());
+    EXPECT_GT(differ(walk, run), 1e-3 * size);
+    EXPECT_GT(differ(walk, all), 1e-3 * size);
+    EXPECT_EQ(differ(walk, walkAgain), 0.0);
+    // A clip past the last plays the first; the loop of one clip is that clip's length.
+    EXPECT_EQ(resolveClip(s, 7), 0);
+    EXPECT_EQ(sceneAnimationDuration(s, 1), animationDuration(s.animations[1]));
+    EXPECT_LT(sceneAnimationDuration(s, 1), sceneAnimationDuration(s, kAllClips));
+}
+
 // A two-joint skin on the fixture's triangle: JOINTS_0 / WEIGHTS_0 appended to its buffer.
 class SkinFiles : public LoaderFiles {
 protected:
