@@ -18,7 +18,7 @@ namespace {
 using setup_test::sunFrom;
 using setup_test::terrain;
 
-ViewFrustum streetView() {
+ViewFrustum sdsmStreetView() {
     ViewFrustum v = setup_test::groundView({0, -0.1, -1});
     v.zFar = 120.0;
     return v;
@@ -58,7 +58,7 @@ void expectInClipCube(const glm::dmat4& m, const glm::dvec3& p, const std::strin
 }
 
 TEST(SdsmSplits, LogarithmicOverTheSamplesDepthRange) {
-    const ViewFrustum view = streetView();
+    const ViewFrustum view = sdsmStreetView();
     const glm::dvec3 f = glm::normalize(view.forward);
     VisibleSamples s;
     for (double z : {3.0, 7.0, 20.0, 48.0}) s.points.push_back(view.eye + f * z);
@@ -75,7 +75,7 @@ TEST(SdsmSplits, LogarithmicOverTheSamplesDepthRange) {
 }
 
 TEST(SdsmSplits, NoUsableSamplesGiveNoSplits) {
-    const ViewFrustum view = streetView();
+    const ViewFrustum view = sdsmStreetView();
     const glm::dvec3 f = glm::normalize(view.forward);
     EXPECT_TRUE(sdsmSplitDepths({}, view.eye, f, view.zNear, view.zFar, 4).empty());
     VisibleSamples one;
@@ -114,7 +114,7 @@ TEST(SdsmBounds, TheKDopHoldsItsPointsAndCutsOffTheRest) {
 }
 
 TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
-    const ViewFrustum view = streetView();
+    const ViewFrustum view = sdsmStreetView();
     const VisibleSamples samples = streetSamples(view, 4000);
     for (const glm::dvec3 dir : {glm::dvec3(0.3, -1, 0.2), glm::dvec3(-1, -0.25, 0.1), glm::dvec3(0, -0.3, 1)})
         for (SplitParameterization per : {SplitParameterization::Ssm, SplitParameterization::Lispsm}) {
@@ -162,7 +162,7 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
 }
 
 TEST(SdsmCascades, FallsBackToLambdaAndSaysWhy) {
-    const ViewFrustum view = streetView();
+    const ViewFrustum view = sdsmStreetView();
     const ShadowLight light = sunFrom({0.3, -1, 0.2});
     CascadeParams lambda = sdsmParams(SplitParameterization::Ssm, {});
     lambda.placement = SplitPlacement::Lambda;
@@ -186,7 +186,7 @@ TEST(SdsmCascades, FallsBackToLambdaAndSaysWhy) {
 TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
     // Samples only at 10-12 m and 60 m: the log splits put none into the middle ones, which then
     // keep V_i n S rather than an empty map.
-    const ViewFrustum view = streetView();
+    const ViewFrustum view = sdsmStreetView();
     const glm::dvec3 f = glm::normalize(view.forward);
     VisibleSamples s;
     s.pixelAngle = 0.005;
