@@ -112,10 +112,6 @@ inline constexpr LoadProgress kLoadProgress{};
 inline void reportProgress(const LoadOptions& options, double fraction) {
     if (options.progress) options.progress(fraction);
 }
-// The step's slot in LoadOptions::timings for a StepTimer (null: not timed).
-inline double* timeInto(const LoadOptions& options, double LoadTimings::*step) {
-    return options.timings ? &(options.timings->*step) : nullptr;
-}
 
 // ---------------------------------------------------------------- the model -> Scene conversion
 class Converter {

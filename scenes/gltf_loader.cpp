@@ -19,7 +19,7 @@ Converter::Converter(const tinygltf::Model& model, const json& rootJson, const I
     : m(model), root(rootJson), images(capture), options(loadOptions), warnings(warningList), scene(target) {}
 
 void Converter::convert() {
-    std::optional<StepTimer> converting(std::in_place, timeInto(options, &LoadTimings::convertMs));
+    std::optional<StepTimer> converting(std::in_place, options.timings, &LoadStepTimes::convertMs);
     convertNodes();
     reportProgress(options, kLoadProgress.nodes);
     checkGeometryBudget();
@@ -31,7 +31,7 @@ void Converter::convert() {
     finishDeformedNodes();
     convertAnimations();
     converting.reset();
-    StepTimer decoding(timeInto(options, &LoadTimings::decodeImagesMs));
+    StepTimer decoding(options.timings, &LoadStepTimes::decodeImagesMs);
     decodeTextures();
 }
 
@@ -54,7 +54,7 @@ void finiteFarPlanes(Scene& scene) {
 // magic apart); external buffers and images are looked up in `baseDir`.
 Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs::path& baseDir,
                 const LoadOptions& options, std::vector<std::string>& warnings) {
-    std::optional<StepTimer> parsing(std::in_place, timeInto(options, &LoadTimings::parseMs));
+    std::optional<StepTimer> parsing(std::in_place, options.timings, &LoadStepTimes::parseMs);
     if (bytes.empty()) fail("the file is empty");
     if (bytes.size() > options.limits.fileBytes)
         fail("the file's " + std::to_string(bytes.size()) + " bytes " + overLimit("fileBytes", options.limits.fileBytes));
@@ -107,7 +107,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     }
 
     {
-        StepTimer decoding(timeInto(options, &LoadTimings::decodeGeometryMs));
+        StepTimer decoding(options.timings, &LoadStepTimes::decodeGeometryMs);
         decodeMeshoptViews(model, root, options.limits);
         decodeDracoPrimitives(model, root, options.limits);
     }
@@ -117,7 +117,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     Converter converter(model, root, capture, options, warnings, scene);
     converter.convert();
 
-    StepTimer finishing(timeInto(options, &LoadTimings::convertMs));
+    StepTimer finishing(options.timings, &LoadStepTimes::convertMs);
     updateWorldTransforms(scene);
     if (scene.triangleCount() == 0) warnings.push_back("the scene has no triangles to draw");
     finiteFarPlanes(scene);
@@ -178,7 +178,7 @@ LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& optio
         const std::filesystem::path baseDir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
         std::vector<unsigned char> bytes;
         {
-            StepTimer reading(gltf::timeInto(options, &LoadTimings::readMs));
+            StepTimer reading(options.timings, &LoadStepTimes::readMs);
             bytes = gltf::readFileBytes(file, options.limits);
         }
         return gltf::loadBytes(std::move(bytes), file, baseDir, options, warnings);
