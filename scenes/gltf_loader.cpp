@@ -52,7 +52,7 @@ void finiteFarPlanes(Scene& scene) {
 
 // `name` is what messages and Scene::source call the file (its extension tells .glb without the
 // magic apart); external buffers and images are looked up in `baseDir`.
-Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs::path& baseDir,
+Scene loadBytes(FileBytes bytes, const fs::path& name, const fs::path& baseDir,
                 const LoadOptions& options, std::vector<std::string>& warnings) {
     std::optional<StepTimer> parsing(std::in_place, options.timings, &LoadStepTimes::parseMs);
     if (bytes.empty()) fail("the file is empty");
@@ -95,8 +95,9 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
                             : gltf.LoadASCIIFromString(&model, &err, &warn, jsonText.c_str(),
                                                        unsigned(jsonText.size()), baseDir.string());
     if (!parsed) fail(err.empty() ? std::string("tinygltf could not parse it") : cleanMessage(err).substr(0, 400));
-    bytes = {};
-    jsonText = {};
+    // Freed here, before the conversion (`bytes = {}` would only clear them: capacity stays).
+    bytes = FileBytes();
+    jsonText = std::string();
     parsing.reset();
     reportProgress(options, kLoadProgress.parsed);
     {
@@ -176,7 +177,7 @@ LoadResult loadReporting(const std::filesystem::path& name, Load&& load) {
 LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& options) {
     return loadReporting(file, [&](std::vector<std::string>& warnings) {
         const std::filesystem::path baseDir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-        std::vector<unsigned char> bytes;
+        gltf::FileBytes bytes;
         {
             StepTimer reading(options.timings, &LoadStepTimes::readMs);
             bytes = gltf::readFileBytes(file, options.limits);
@@ -188,7 +189,7 @@ LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& optio
 LoadResult loadSceneFromMemory(const std::vector<unsigned char>& bytes, const std::filesystem::path& name,
                                const std::filesystem::path& baseDir, const LoadOptions& options) {
     return loadReporting(name, [&](std::vector<std::string>& warnings) {
-        return gltf::loadBytes(bytes, name, baseDir, options, warnings);
+        return gltf::loadBytes(gltf::FileBytes(bytes.begin(), bytes.end()), name, baseDir, options, warnings);
     });
 }
 
