@@ -10,6 +10,7 @@
 //   gltf_deform.cpp      skins, JOINTS_0/WEIGHTS_0, morph targets, node morph weights
 //   gltf_draco.cpp       KHR_draco_mesh_compression into plain accessors
 //   gltf_meshopt.cpp     EXT/KHR_meshopt_compression into plain bufferViews
+//   gltf_glb_bin.cpp     a large GLB's BIN chunk handed to tinygltf without its copy
 //   gltf_loader.cpp      the steps in order, load limits
 #include "scenes/bulk_buffer.h"
 #include "scenes/gltf_loader.h"
@@ -72,6 +73,18 @@ const json* member(const json& object, const char* key);
 std::optional<std::string> tinygltfJson(const json& root);
 // The GLB with its JSON chunk replaced by `jsonText` (checkGlb has checked the layout).
 FileBytes glbWithJson(const FileBytes& glb, const std::string& jsonText);
+
+// ---------------------------------------------------------------- GLB BIN handoff (gltf_glb_bin.cpp)
+struct GlbBinHandoff {
+    std::string jsonText;            // the JSON with buffer 0 named by a marker URI
+    std::vector<unsigned char> bin;  // buffer 0's bytes, given to tinygltf by swap
+};
+// For a GLB whose BIN chunk is at least 4 MB and larger than its JSON, buffer 0 takes the chunk and
+// every other buffer has a URI; nullopt otherwise (tinygltf's binary parse, its own messages).
+std::optional<GlbBinHandoff> glbBinHandoff(const FileBytes& glb, const json& root);
+// tinygltf's parse of handoff.jsonText; the marker's file callback hands over handoff.bin.
+bool parseWithHandoff(tinygltf::TinyGLTF& gltf, tinygltf::Model& model, std::string& err, std::string& warn,
+                      GlbBinHandoff& handoff, const std::string& baseDir);
 
 // ---------------------------------------------------------------- compressed geometry
 // Run on tinygltf's model before the conversion: compressed data decoded into plain buffers,

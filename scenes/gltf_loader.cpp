@@ -78,9 +78,13 @@ Scene loadBytes(FileBytes bytes, const fs::path& name, const fs::path& baseDir,
     checkDeclaredCounts(root, options.limits);
     checkExternalFiles(root, baseDir);
 
+    std::optional<GlbBinHandoff> handoff;
     if (std::optional<std::string> adapted = tinygltfJson(root)) {
         if (glb) bytes = glbWithJson(bytes, *adapted);
         jsonText = std::move(*adapted);
+    } else if (glb) {
+        handoff = glbBinHandoff(bytes, root);
+        if (handoff) bytes = FileBytes();  // the chunk is copied out: the file's bytes are done with
     }
 
     tinygltf::Model model;
@@ -90,7 +94,8 @@ Scene loadBytes(FileBytes bytes, const fs::path& name, const fs::path& baseDir,
     capture.wanted = baseColorImages(root);
     gltf.SetImageLoader(&captureImage, &capture);
     std::string err, warn;
-    const bool parsed = glb ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
+    const bool parsed = handoff ? parseWithHandoff(gltf, model, err, warn, *handoff, baseDir.string())
+                        : glb   ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
                                                         baseDir.string())
                             : gltf.LoadASCIIFromString(&model, &err, &warn, jsonText.c_str(),
                                                        unsigned(jsonText.size()), baseDir.string());
@@ -98,6 +103,7 @@ Scene loadBytes(FileBytes bytes, const fs::path& name, const fs::path& baseDir,
     // Freed here, before the conversion (`bytes = {}` would only clear them: capacity stays).
     bytes = FileBytes();
     jsonText = std::string();
+    handoff.reset();
     parsing.reset();
     reportProgress(options, kLoadProgress.parsed);
     {

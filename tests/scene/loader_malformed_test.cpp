@@ -33,6 +33,30 @@ TEST_F(Malformed, TheValidTriangleLoadsInBothContainers) {
     EXPECT_EQ(a.meshes[0].primitives[0].positions, b.meshes[0].primitives[0].positions);
 }
 
+// A GLB whose BIN chunk is large (4 MB and more, larger than its JSON) is handed to tinygltf without
+// the chunk's copy (scenes/gltf_glb_bin.cpp): the same scene as from a small GLB, and for a buffer
+// that does not fit the chunk, tinygltf's own refusal as before.
+TEST_F(Malformed, LargeGlbBinChunkLoadsLikeASmallOne) {
+    Bytes bin = triangleBin(2, 0.25f);
+    bin.resize(std::size_t(5) << 20, 0xAB);  // the triangle, then 5 MB that no view reads
+    json j = triangleJson("");
+    j["buffers"][0]["byteLength"] = bin.size();
+    const Scene large = expectLoads(write("large.glb", glb(j, bin)));
+    const Scene small = expectLoads(write("small.glb", glb(triangleJson(""), triangleBin(2, 0.25f))));
+    ASSERT_EQ(large.meshes.size(), 1u);
+    ASSERT_EQ(large.meshes[0].primitives.size(), 1u);
+    EXPECT_EQ(large.meshes[0].primitives[0].positions, small.meshes[0].primitives[0].positions);
+    EXPECT_EQ(large.meshes[0].primitives[0].indices, small.meshes[0].primitives[0].indices);
+    EXPECT_EQ(large.meshes[0].primitives[0].positions[0].x, 0.25f);
+
+    j["buffers"][0]["byteLength"] = bin.size() + 4;  // more than the chunk holds
+    expectError(write("short.glb", glb(j, bin)), "byteLength");
+    json second = triangleJson("");
+    second["buffers"][0]["byteLength"] = bin.size();
+    second["buffers"].push_back({{"byteLength", 4}});  // a second buffer without a URI: tinygltf's path
+    EXPECT_EQ(expectLoads(write("two.glb", glb(second, bin))).triangleCount(), 1u);
+}
+
 TEST_F(Malformed, MissingFile) { expectError(dir / "nothere.gltf", "file not found"); }
 
 TEST_F(Malformed, EmptyFile) { expectError(write("empty.gltf", std::string()), "empty"); }
