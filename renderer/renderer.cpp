@@ -85,11 +85,11 @@ void Renderer::setScene(const Scene& scene, bool streamTextures, LoadTimings* ti
     gpuScene_.reset();  // the old scene's buffers go before the new ones are made
     gpuScene_ = std::make_unique<GpuScene>(scene, streamTextures, timings);
     {
-        StepTimer building(timings ? &timings->bvhMs : nullptr);
+        StepTimer building(timings, &LoadStepTimes::bvhMs);
         culler_.setScene(scene);
     }
     scene_ = &scene;
-    StepTimer modelling(timings ? &timings->casterModelMs : nullptr);
+    StepTimer modelling(timings, &LoadStepTimes::casterModelMs);
     backdrops_ = detectBackdrops(scene);
     ++sceneLoads_;
     ++sceneVersion_;

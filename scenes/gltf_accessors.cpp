@@ -104,10 +104,15 @@ const unsigned char* Converter::viewRange(int viewIndex, std::size_t byteOffset,
     return data.data() + view.byteOffset + byteOffset;
 }
 
-// An accessor decoded to doubles (count * components), sparse substitution applied
-// (tinygltf 2.7 parses the sparse object but does not apply it).
-std::vector<double> Converter::readAccessor(int index, const std::string& what, int wantComponents, bool integerOnly,
-                                       std::size_t& count) const {
+// An accessor decoded to Vector's elements (count * components), sparse substitution applied (tinygltf 2.7 parses
+// the sparse object but does not apply it). Each component is read as a double (normalized
+// integers scaled there) and converted to T once: a float or index target gets exactly what the
+// double decode converted later gave, without the double array (twice the bytes of the floats,
+// written and read once more: the largest transient of a large load). Filled by push_back after a
+// reserve: no value-initialising pass over fresh memory.
+template <class Vector>
+Vector Converter::decodeAccessor(int index, const std::string& what, int wantComponents, bool integerOnly,
+                                         std::size_t& count) const {
     if (index < 0 || std::size_t(index) >= m.accessors.size())
         fail(what + ": accessor " + std::to_string(index) + " does not exist");
     const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
@@ -128,18 +133,18 @@ std::vector<double> Converter::readAccessor(int index, const std::string& what, 
     // Index accessors are plain integers even if a file marks them normalized.
     const bool normalized = a.normalized && !integerOnly;
 
-    std::vector<double> out;
+    using T = typename Vector::value_type;
+    Vector out;
     if (a.bufferView >= 0) {
         std::size_t stride = 0;
         // Validate the range first: a bogus count must not allocate before being refused.
         const unsigned char* p = viewRange(a.bufferView, a.byteOffset, a.count, elementSize, true, stride, where);
-        out.resize(a.count * std::size_t(components));
+        reserveUnwritten(out, a.count * std::size_t(components));
         for (std::size_t i = 0; i < a.count; ++i, p += stride)
             for (int c = 0; c < components; ++c)
-                out[i * std::size_t(components) + std::size_t(c)] =
-                    readComponent(p + std::size_t(c) * std::size_t(csize), a.componentType, normalized);
+                out.push_back(T(readComponent(p + std::size_t(c) * std::size_t(csize), a.componentType, normalized)));
     } else {
-        out.assign(a.count * std::size_t(components), 0.0);  // glTF: no bufferView means zeros
+        out.assign(a.count * std::size_t(components), T(0));  // glTF: no bufferView means zeros
     }
 
     if (a.sparse.isSparse) {
@@ -166,25 +171,33 @@ std::vector<double> Converter::readAccessor(int index, const std::string& what, 
                 fail(sparse + ": index " + std::to_string(target) + " is out of range (count " +
                      std::to_string(a.count) + ")");
             for (int c = 0; c < components; ++c)
-                out[target * std::size_t(components) + std::size_t(c)] = readComponent(
-                    values + k * valueStride + std::size_t(c) * std::size_t(csize), a.componentType, normalized);
+                out[target * std::size_t(components) + std::size_t(c)] = T(readComponent(
+                    values + k * valueStride + std::size_t(c) * std::size_t(csize), a.componentType, normalized));
         }
     }
     return out;
 }
 
+std::vector<double> Converter::readAccessor(int index, const std::string& what, int wantComponents, bool integerOnly,
+                                            std::size_t& count) const {
+    return decodeAccessor<std::vector<double>>(index, what, wantComponents, integerOnly, count);
+}
 
-std::shared_ptr<const Converter::DecodedAccessor> Converter::sharedAccessor(int index, const std::string& what,
-                                                                             int wantComponents, bool integerOnly) {
+std::shared_ptr<Converter::DecodedAccessor> Converter::sharedAccessor(int index, const std::string& what,
+                                                                       int wantComponents, bool integerOnly) {
     const AccessorUse use{index, wantComponents, integerOnly};
     const auto users = accessorUsers.find(use);
     const bool shared = users != accessorUsers.end() && users->second > 1;
-    std::shared_ptr<const DecodedAccessor> decoded;
+    std::shared_ptr<DecodedAccessor> decoded;
     if (auto cached = accessorCache.find(use); cached != accessorCache.end()) {
         decoded = cached->second;
     } else {
         auto fresh = std::make_shared<DecodedAccessor>();
-        fresh->values = readAccessor(index, what, wantComponents, integerOnly, fresh->count);
+        // Index accessors are unsigned integers below 2^32: exact as uint32.
+        if (integerOnly && wantComponents == 1)
+            fresh->indices = decodeAccessor<std::vector<std::uint32_t>>(index, what, wantComponents, integerOnly, fresh->count);
+        else
+            fresh->values = decodeAccessor<BulkVector<float>>(index, what, wantComponents, integerOnly, fresh->count);
         decoded = std::move(fresh);
         if (shared) accessorCache[use] = decoded;
     }
@@ -205,6 +218,10 @@ void Converter::countAccessorUsers() {
 
 bool finiteAll(const std::vector<double>& v) {
     return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+bool finiteAll(const BulkVector<float>& v) {
+    return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
 }
 
 }  // namespace shadowlab::gltf

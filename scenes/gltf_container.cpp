@@ -147,7 +147,7 @@ const json* member(const json& object, const char* key) {
     return it == object.end() ? nullptr : &*it;
 }
 
-std::vector<unsigned char> readFileBytes(const fs::path& file, const LoadLimits& limits) {
+FileBytes readFileBytes(const fs::path& file, const LoadLimits& limits) {
     std::error_code ec;
     const fs::file_status status = fs::status(file, ec);
     if (ec || !fs::exists(status)) fail("file not found");
@@ -163,7 +163,7 @@ std::vector<unsigned char> readFileBytes(const fs::path& file, const LoadLimits&
     const auto size = std::uint64_t(st.st_size);
     if (size == 0) fail("the file is empty");
     if (size > limits.fileBytes) fail("the file's " + std::to_string(size) + " bytes " + overLimit("fileBytes", limits.fileBytes));
-    std::vector<unsigned char> bytes(std::size_t(size), 0);
+    FileBytes bytes(static_cast<std::size_t>(size));  // not zeroed: read() fills it
     std::size_t done = 0;
     while (done < bytes.size()) {
         const ssize_t n = ::read(f.fd, bytes.data() + done, bytes.size() - done);
@@ -174,9 +174,9 @@ std::vector<unsigned char> readFileBytes(const fs::path& file, const LoadLimits&
     return bytes;
 }
 
-bool isGlb(const std::vector<unsigned char>& bytes) { return bytes.size() >= 4 && readU32(bytes.data()) == kGlbMagic; }
+bool isGlb(const FileBytes& bytes) { return bytes.size() >= 4 && readU32(bytes.data()) == kGlbMagic; }
 
-std::string checkGlb(const std::vector<unsigned char>& bytes) {
+std::string checkGlb(const FileBytes& bytes) {
     const std::size_t size = bytes.size();
     if (size < 12) fail("truncated GLB: " + std::to_string(size) + " bytes, the GLB header alone needs 12");
     const std::uint32_t version = readU32(bytes.data() + 4);
@@ -341,12 +341,12 @@ std::optional<std::string> tinygltfJson(const json& root) {
     return copy.dump();
 }
 
-std::vector<unsigned char> glbWithJson(const std::vector<unsigned char>& glb, const std::string& jsonText) {
+FileBytes glbWithJson(const FileBytes& glb, const std::string& jsonText) {
     const std::size_t jsonLength = readU32(glb.data() + 12);
     const std::size_t rest = std::min<std::size_t>(readU32(glb.data() + 8), glb.size()) - 20 - jsonLength;
     const std::size_t padded = (jsonText.size() + 3) & ~std::size_t(3);
     if (padded + rest + 20 > std::numeric_limits<std::uint32_t>::max()) fail("the GLB grows past 4 GB");
-    std::vector<unsigned char> out(20 + padded + rest, ' ');
+    FileBytes out(20 + padded + rest, ' ');
     std::copy(glb.begin(), glb.begin() + 8, out.begin());
     auto put = [&](std::size_t at, std::uint32_t v) {
         for (int b = 0; b < 4; ++b) out[at + std::size_t(b)] = static_cast<unsigned char>(v >> (8 * b));

@@ -10,7 +10,9 @@
 //   gltf_deform.cpp      skins, JOINTS_0/WEIGHTS_0, morph targets, node morph weights
 //   gltf_draco.cpp       KHR_draco_mesh_compression into plain accessors
 //   gltf_meshopt.cpp     EXT/KHR_meshopt_compression into plain bufferViews
+//   gltf_glb_bin.cpp     a large GLB's BIN chunk handed to tinygltf without its copy
 //   gltf_loader.cpp      the steps in order, load limits
+#include "scenes/bulk_buffer.h"
 #include "scenes/gltf_loader.h"
 
 #include <nlohmann/json.hpp>
@@ -50,12 +52,14 @@ std::string overLimit(const char* key, std::uint64_t limit);
 std::string cleanMessage(const std::string& text);
 
 // ---------------------------------------------------------------- container (gltf_container.cpp)
+// A file's bytes: read once, parsed, freed before the conversion (scenes/bulk_buffer.h).
+using FileBytes = BulkVector<unsigned char>;
 // The whole file, refused before reading when it is not a regular file (a FIFO would block, a
 // device never end) or larger than limits.fileBytes.
-std::vector<unsigned char> readFileBytes(const std::filesystem::path& file, const LoadLimits& limits);
-bool isGlb(const std::vector<unsigned char>& bytes);
+FileBytes readFileBytes(const std::filesystem::path& file, const LoadLimits& limits);
+bool isGlb(const FileBytes& bytes);
 // The GLB layout (glTF 2.0 spec, "Binary glTF Layout"); returns the JSON chunk.
-std::string checkGlb(const std::vector<unsigned char>& bytes);
+std::string checkGlb(const FileBytes& bytes);
 // Size and nesting depth checked on the text before a DOM is built (a deep file would otherwise
 // exhaust the stack of a recursive consumer); parse errors with line and column.
 json parseJson(const std::string& text, const LoadLimits& limits);
@@ -68,7 +72,19 @@ const json* member(const json& object, const char* key);
 // refuse before the decoders run: Draco index accessors, meshopt fallback buffers); nullopt if not.
 std::optional<std::string> tinygltfJson(const json& root);
 // The GLB with its JSON chunk replaced by `jsonText` (checkGlb has checked the layout).
-std::vector<unsigned char> glbWithJson(const std::vector<unsigned char>& glb, const std::string& jsonText);
+FileBytes glbWithJson(const FileBytes& glb, const std::string& jsonText);
+
+// ---------------------------------------------------------------- GLB BIN handoff (gltf_glb_bin.cpp)
+struct GlbBinHandoff {
+    std::string jsonText;            // the JSON with buffer 0 named by a marker URI
+    std::vector<unsigned char> bin;  // buffer 0's bytes, given to tinygltf by swap
+};
+// For a GLB whose BIN chunk is at least 4 MB and larger than its JSON, buffer 0 takes the chunk and
+// every other buffer has a URI; nullopt otherwise (tinygltf's binary parse, its own messages).
+std::optional<GlbBinHandoff> glbBinHandoff(const FileBytes& glb, const json& root);
+// tinygltf's parse of handoff.jsonText; the marker's file callback hands over handoff.bin.
+bool parseWithHandoff(tinygltf::TinyGLTF& gltf, tinygltf::Model& model, std::string& err, std::string& warn,
+                      GlbBinHandoff& handoff, const std::string& baseDir);
 
 // ---------------------------------------------------------------- compressed geometry
 // Run on tinygltf's model before the conversion: compressed data decoded into plain buffers,
@@ -112,10 +128,6 @@ inline constexpr LoadProgress kLoadProgress{};
 inline void reportProgress(const LoadOptions& options, double fraction) {
     if (options.progress) options.progress(fraction);
 }
-// The step's slot in LoadOptions::timings for a StepTimer (null: not timed).
-inline double* timeInto(const LoadOptions& options, double LoadTimings::*step) {
-    return options.timings ? &(options.timings->*step) : nullptr;
-}
 
 // ---------------------------------------------------------------- the model -> Scene conversion
 class Converter {
@@ -138,20 +150,26 @@ private:
 
     // accessors (gltf_accessors.cpp)
     struct DecodedAccessor {
-        std::vector<double> values;  // count * components
+        BulkVector<float> values;            // count * components (attributes)
+        std::vector<std::uint32_t> indices;  // count (index accessors)
         std::size_t count = 0;
     };
     // Accessors referenced by more than one primitive are decoded once and kept until their last
     // user is done (a mesh whose primitives share one POSITION accessor is the common case).
     using AccessorUse = std::tuple<int, int, bool>;  // accessor, components, integerOnly
     std::map<AccessorUse, int> accessorUsers;
-    std::map<AccessorUse, std::shared_ptr<const DecodedAccessor>> accessorCache;
+    std::map<AccessorUse, std::shared_ptr<DecodedAccessor>> accessorCache;
     const unsigned char* viewRange(int viewIndex, std::size_t byteOffset, std::size_t count, std::size_t elementSize,
                                    bool useViewStride, std::size_t& stride, const std::string& what) const;
+    template <class Vector>
+    Vector decodeAccessor(int index, const std::string& what, int wantComponents, bool integerOnly,
+                                  std::size_t& count) const;
     std::vector<double> readAccessor(int index, const std::string& what, int wantComponents, bool integerOnly,
                                      std::size_t& count) const;
-    std::shared_ptr<const DecodedAccessor> sharedAccessor(int index, const std::string& what, int wantComponents,
-                                                          bool integerOnly);
+    // Attributes as floats, index accessors (integerOnly, 1 component) as uint32. The caller that
+    // holds the only reference may take the arrays.
+    std::shared_ptr<DecodedAccessor> sharedAccessor(int index, const std::string& what, int wantComponents,
+                                                    bool integerOnly);
     void countAccessorUsers();
 
     // textures and materials (gltf_textures.cpp, gltf_meshes.cpp)
@@ -196,5 +214,6 @@ private:
 };
 
 bool finiteAll(const std::vector<double>& v);
+bool finiteAll(const BulkVector<float>& v);
 
 }  // namespace shadowlab::gltf

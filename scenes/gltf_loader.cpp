@@ -19,7 +19,7 @@ Converter::Converter(const tinygltf::Model& model, const json& rootJson, const I
     : m(model), root(rootJson), images(capture), options(loadOptions), warnings(warningList), scene(target) {}
 
 void Converter::convert() {
-    std::optional<StepTimer> converting(std::in_place, timeInto(options, &LoadTimings::convertMs));
+    std::optional<StepTimer> converting(std::in_place, options.timings, &LoadStepTimes::convertMs);
     convertNodes();
     reportProgress(options, kLoadProgress.nodes);
     checkGeometryBudget();
@@ -31,7 +31,7 @@ void Converter::convert() {
     finishDeformedNodes();
     convertAnimations();
     converting.reset();
-    StepTimer decoding(timeInto(options, &LoadTimings::decodeImagesMs));
+    StepTimer decoding(options.timings, &LoadStepTimes::decodeImagesMs);
     decodeTextures();
 }
 
@@ -52,9 +52,9 @@ void finiteFarPlanes(Scene& scene) {
 
 // `name` is what messages and Scene::source call the file (its extension tells .glb without the
 // magic apart); external buffers and images are looked up in `baseDir`.
-Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs::path& baseDir,
+Scene loadBytes(FileBytes bytes, const fs::path& name, const fs::path& baseDir,
                 const LoadOptions& options, std::vector<std::string>& warnings) {
-    std::optional<StepTimer> parsing(std::in_place, timeInto(options, &LoadTimings::parseMs));
+    std::optional<StepTimer> parsing(std::in_place, options.timings, &LoadStepTimes::parseMs);
     if (bytes.empty()) fail("the file is empty");
     if (bytes.size() > options.limits.fileBytes)
         fail("the file's " + std::to_string(bytes.size()) + " bytes " + overLimit("fileBytes", options.limits.fileBytes));
@@ -78,9 +78,13 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     checkDeclaredCounts(root, options.limits);
     checkExternalFiles(root, baseDir);
 
+    std::optional<GlbBinHandoff> handoff;
     if (std::optional<std::string> adapted = tinygltfJson(root)) {
         if (glb) bytes = glbWithJson(bytes, *adapted);
         jsonText = std::move(*adapted);
+    } else if (glb) {
+        handoff = glbBinHandoff(bytes, root);
+        if (handoff) bytes = FileBytes();  // the chunk is copied out: the file's bytes are done with
     }
 
     tinygltf::Model model;
@@ -90,13 +94,16 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     capture.wanted = baseColorImages(root);
     gltf.SetImageLoader(&captureImage, &capture);
     std::string err, warn;
-    const bool parsed = glb ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
+    const bool parsed = handoff ? parseWithHandoff(gltf, model, err, warn, *handoff, baseDir.string())
+                        : glb   ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
                                                         baseDir.string())
                             : gltf.LoadASCIIFromString(&model, &err, &warn, jsonText.c_str(),
                                                        unsigned(jsonText.size()), baseDir.string());
     if (!parsed) fail(err.empty() ? std::string("tinygltf could not parse it") : cleanMessage(err).substr(0, 400));
-    bytes = {};
-    jsonText = {};
+    // Freed here, before the conversion (`bytes = {}` would only clear them: capacity stays).
+    bytes = FileBytes();
+    jsonText = std::string();
+    handoff.reset();
     parsing.reset();
     reportProgress(options, kLoadProgress.parsed);
     {
@@ -107,7 +114,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     }
 
     {
-        StepTimer decoding(timeInto(options, &LoadTimings::decodeGeometryMs));
+        StepTimer decoding(options.timings, &LoadStepTimes::decodeGeometryMs);
         decodeMeshoptViews(model, root, options.limits);
         decodeDracoPrimitives(model, root, options.limits);
     }
@@ -117,7 +124,7 @@ Scene loadBytes(std::vector<unsigned char> bytes, const fs::path& name, const fs
     Converter converter(model, root, capture, options, warnings, scene);
     converter.convert();
 
-    StepTimer finishing(timeInto(options, &LoadTimings::convertMs));
+    StepTimer finishing(options.timings, &LoadStepTimes::convertMs);
     updateWorldTransforms(scene);
     if (scene.triangleCount() == 0) warnings.push_back("the scene has no triangles to draw");
     finiteFarPlanes(scene);
@@ -176,9 +183,9 @@ LoadResult loadReporting(const std::filesystem::path& name, Load&& load) {
 LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& options) {
     return loadReporting(file, [&](std::vector<std::string>& warnings) {
         const std::filesystem::path baseDir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-        std::vector<unsigned char> bytes;
+        gltf::FileBytes bytes;
         {
-            StepTimer reading(gltf::timeInto(options, &LoadTimings::readMs));
+            StepTimer reading(options.timings, &LoadStepTimes::readMs);
             bytes = gltf::readFileBytes(file, options.limits);
         }
         return gltf::loadBytes(std::move(bytes), file, baseDir, options, warnings);
@@ -188,7 +195,7 @@ LoadResult loadScene(const std::filesystem::path& file, const LoadOptions& optio
 LoadResult loadSceneFromMemory(const std::vector<unsigned char>& bytes, const std::filesystem::path& name,
                                const std::filesystem::path& baseDir, const LoadOptions& options) {
     return loadReporting(name, [&](std::vector<std::string>& warnings) {
-        return gltf::loadBytes(bytes, name, baseDir, options, warnings);
+        return gltf::loadBytes(gltf::FileBytes(bytes.begin(), bytes.end()), name, baseDir, options, warnings);
     });
 }
 

@@ -176,11 +176,12 @@ std::optional<Primitive> Converter::convertPrimitive(const tinygltf::Primitive& 
         return std::nullopt;
     }
     const auto positionData = sharedAccessor(positionAccessor, where + " POSITION", 3, false);
-    const std::vector<double>& positions = positionData->values;
+    const BulkVector<float>& positions = positionData->values;
     const std::size_t vertexCount = positionData->count;
 
     // Empty when the file has none; kept as shared decodes (no copy per primitive).
     std::shared_ptr<const DecodedAccessor> normalData, texcoordData;
+    int texcoordAccessor = -1;
     if (const int a = attribute("NORMAL"); a >= 0) {
         normalData = sharedAccessor(a, where + " NORMAL", 3, false);
         const std::size_t n = normalData->count;
@@ -189,6 +190,7 @@ std::optional<Primitive> Converter::convertPrimitive(const tinygltf::Primitive& 
                  std::to_string(vertexCount));
     }
     if (const int a = attribute("TEXCOORD_0"); a >= 0) {
+        texcoordAccessor = a;
         texcoordData = sharedAccessor(a, where + " TEXCOORD_0", 2, false);
         const std::size_t n = texcoordData->count;
         if (n != vertexCount)
@@ -198,20 +200,21 @@ std::optional<Primitive> Converter::convertPrimitive(const tinygltf::Primitive& 
 
     std::vector<std::uint32_t> order;  // the vertex sequence as stored (list, strip or fan)
     if (src.indices >= 0) {
-        const auto indexData = sharedAccessor(src.indices, where + " indices", 1, true);
-        const std::vector<double>& raw = indexData->values;
-        const std::size_t n = indexData->count;
-        order.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (raw[i] >= double(vertexCount))
-                fail(where + ": index " + std::to_string(std::uint64_t(raw[i])) + " (at " + std::to_string(i) +
+        const std::shared_ptr<DecodedAccessor> indexData = sharedAccessor(src.indices, where + " indices", 1, true);
+        const std::vector<std::uint32_t>& raw = indexData->indices;
+        for (std::size_t i = 0; i < raw.size(); ++i)
+            if (raw[i] >= vertexCount)
+                fail(where + ": index " + std::to_string(raw[i]) + " (at " + std::to_string(i) +
                      ") is out of range, the primitive has " + std::to_string(vertexCount) + " vertices");
-            order[i] = std::uint32_t(raw[i]);
-        }
+        // The only holder (not shared, or its last user) gives its array away: no copy of the indices.
+        if (indexData.use_count() == 1)
+            order = std::move(indexData->indices);
+        else
+            order = raw;
     } else {
         if (vertexCount > std::numeric_limits<std::uint32_t>::max()) fail(where + ": too many vertices");
-        order.resize(vertexCount);
-        for (std::size_t i = 0; i < vertexCount; ++i) order[i] = std::uint32_t(i);
+        reserveUnwritten(order, vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i) order.push_back(std::uint32_t(i));
     }
 
     if (!finiteAll(positions)) {
@@ -241,36 +244,43 @@ std::optional<Primitive> Converter::convertPrimitive(const tinygltf::Primitive& 
         return std::nullopt;
     }
 
-    p.positions.resize(vertexCount);
+    // reserve and push_back: the scene's arrays are written once, not zeroed first.
+    reserveUnwritten(p.positions, vertexCount);
     for (std::size_t i = 0; i < vertexCount; ++i) {
-        p.positions[i] = glm::vec3(float(positions[3 * i]), float(positions[3 * i + 1]), float(positions[3 * i + 2]));
+        p.positions.emplace_back(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
         p.bounds.extend(glm::dvec3(p.positions[i]));
     }
     if (normalData && !finiteAll(normalData->values)) {
         warn(where + ": non-finite NORMAL values, normals recomputed");
         normalData.reset();
     }
-    p.normals.resize(vertexCount);
     if (normalData) {
-        const std::vector<double>& normals = normalData->values;
+        const BulkVector<float>& normals = normalData->values;
+        reserveUnwritten(p.normals, vertexCount);
         for (std::size_t i = 0; i < vertexCount; ++i) {
-            // Braces, not parentheses: `vec3 n(float(a[i]), ...)` is a function declaration to clang 14.
-            const glm::vec3 n{float(normals[3 * i]), float(normals[3 * i + 1]), float(normals[3 * i + 2])};
+            const glm::vec3 n{normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
             const float length = glm::length(n);
-            p.normals[i] = length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
+            p.normals.push_back(length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f));
         }
     } else {
+        p.normals.resize(vertexCount);
         computeNormals(p);
     }
     if (texcoordData) {
-        const std::vector<double>& texcoords = texcoordData->values;
         glm::dmat3 transform(1.0);
-        const bool transformed = textureTransform(src.material, transform);
-        p.texcoords.resize(vertexCount);
-        for (std::size_t i = 0; i < vertexCount; ++i) {
-            glm::dvec3 uv(texcoords[2 * i], texcoords[2 * i + 1], 1.0);
-            if (transformed) uv = transform * uv;
-            p.texcoords[i] = glm::vec2(float(uv.x), float(uv.y));
+        reserveUnwritten(p.texcoords, vertexCount);
+        if (textureTransform(src.material, transform)) {
+            // Transformed from the double decode: quantized texcoords keep their full precision.
+            std::size_t count = 0;
+            const std::vector<double> texcoords =
+                readAccessor(texcoordAccessor, where + " TEXCOORD_0", 2, false, count);
+            for (std::size_t i = 0; i < vertexCount; ++i) {
+                const glm::dvec3 uv = transform * glm::dvec3(texcoords[2 * i], texcoords[2 * i + 1], 1.0);
+                p.texcoords.emplace_back(float(uv.x), float(uv.y));
+            }
+        } else {
+            const BulkVector<float>& texcoords = texcoordData->values;
+            for (std::size_t i = 0; i < vertexCount; ++i) p.texcoords.emplace_back(texcoords[2 * i], texcoords[2 * i + 1]);
         }
     }
     p.material = src.material;

@@ -1,28 +1,41 @@
 #include "scenes/load_timings.h"
 
+#include <time.h>
+
 #include <cstdio>
 
 namespace shadowlab {
 
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
 std::string describeLoadTimings(const LoadTimings& t) {
     struct Row {
         const char* name;
-        double ms;
+        double LoadStepTimes::*step;
     };
     const Row rows[] = {
-        {"read", t.readMs},         {"parse", t.parseMs},
-        {"decode geometry", t.decodeGeometryMs}, {"convert", t.convertMs},
-        {"decode images", t.decodeImagesMs},     {"build clusters", t.clustersMs},
-        {"build BVH", t.bvhMs},     {"build caster model", t.casterModelMs},
-        {"upload", t.uploadMs},     {"total", t.totalMs()},
+        {"read", &LoadStepTimes::readMs},
+        {"parse", &LoadStepTimes::parseMs},
+        {"decode geometry", &LoadStepTimes::decodeGeometryMs},
+        {"convert", &LoadStepTimes::convertMs},
+        {"decode images", &LoadStepTimes::decodeImagesMs},
+        {"build clusters", &LoadStepTimes::clustersMs},
+        {"build BVH", &LoadStepTimes::bvhMs},
+        {"build caster model", &LoadStepTimes::casterModelMs},
+        {"upload", &LoadStepTimes::uploadMs},
     };
     std::string text;
-    char line[96];
+    char line[112];
     for (const Row& r : rows) {
-        std::snprintf(line, sizeof line, "  %-20s %10.1f ms\n", r.name, r.ms);
+        std::snprintf(line, sizeof line, "  %-20s %10.1f ms %10.1f ms CPU\n", r.name, t.*(r.step), t.cpu.*(r.step));
         text += line;
     }
-    return text;
+    std::snprintf(line, sizeof line, "  %-20s %10.1f ms %10.1f ms CPU\n", "total", t.totalMs(), t.cpu.totalMs());
+    return text + line;
 }
 
 }  // namespace shadowlab

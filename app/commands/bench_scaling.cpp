@@ -110,7 +110,8 @@ std::string scalingCsvHeader() {
            "forward_triangles,forward_draws,shadow_triangles,shadow_draws,forward_clusters_visible,"
            "forward_clusters_culled,shadow_clusters_visible,shadow_clusters_culled,load_s,load_s_per_mtri,"
            "load_cpu_s,load_cpu_s_per_mtri,"
-           "peak_rss_mib,peak_rss_mib_per_mtri,read_ms,parse_ms,decode_ms,convert_ms,build_ms,upload_ms\n";
+           "peak_rss_mib,peak_rss_mib_per_mtri,read_ms,parse_ms,decode_ms,convert_ms,build_ms,upload_ms,"
+           "read_cpu_ms,parse_cpu_ms,decode_cpu_ms,convert_cpu_ms,build_cpu_ms,upload_cpu_ms\n";
 }
 
 std::string scalingCsvRow(const ScalingRow& r) {
@@ -124,7 +125,9 @@ std::string scalingCsvRow(const ScalingRow& r) {
       << r.shadowClustersVisible << ',' << r.shadowClustersCulled << ',' << r.loadSeconds << ','
       << r.loadSeconds / mtri << ',' << r.loadCpuSeconds << ',' << r.loadCpuSeconds / mtri << ',' << r.peakRssMiB << ',' << r.peakRssMiB / mtri << ',' << t.readMs << ','
       << t.parseMs << ',' << t.decodeGeometryMs + t.decodeImagesMs << ',' << t.convertMs << ',' << t.buildMs() << ','
-      << t.uploadMs << '\n';
+      << t.uploadMs << ',' << t.cpu.readMs << ',' << t.cpu.parseMs << ','
+      << t.cpu.decodeGeometryMs + t.cpu.decodeImagesMs << ',' << t.cpu.convertMs << ',' << t.cpu.buildMs() << ','
+      << t.cpu.uploadMs << '\n';
     return s.str();
 }
 

@@ -1,7 +1,6 @@
 #include "commands/load_measure.h"
 
 #include <malloc.h>
-#include <time.h>
 
 #include <chrono>
 #include <cstdio>
@@ -18,16 +17,6 @@ std::size_t peakRssBytes() {
     return 0;
 }
 
-namespace {
-
-double processCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-}  // namespace
-
 bool resetPeakRss() {
     malloc_trim(0);
     std::ofstream refs("/proc/self/clear_refs");
@@ -40,7 +29,7 @@ MeasuredLoad measureLoad(const std::string& file, LoadOptions options, Renderer*
     MeasuredLoad measured;
     options.timings = &measured.timings;
     const auto start = std::chrono::steady_clock::now();
-    const double cpuStart = processCpuSeconds();
+    const double cpuStart = processCpuMs();
     LoadResult result = loadScene(file, options);
     if (!result.ok()) {
         measured.error = result.error;
@@ -49,7 +38,7 @@ MeasuredLoad measureLoad(const std::string& file, LoadOptions options, Renderer*
     measured.scene = std::move(result.scene);
     if (renderer) renderer->setScene(*measured.scene, false, &measured.timings);
     measured.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    measured.cpuSeconds = processCpuSeconds() - cpuStart;
+    measured.cpuSeconds = 1e-3 * (processCpuMs() - cpuStart);
     for (const Mesh& mesh : measured.scene->meshes)
         for (const Primitive& p : mesh.primitives) measured.uniqueTriangles += p.triangleCount();
     return measured;

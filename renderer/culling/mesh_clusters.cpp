@@ -1,5 +1,7 @@
 #include "culling/mesh_clusters.h"
 
+#include "scenes/bulk_buffer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,7 +17,7 @@ struct TriangleCentroid {
 // Median splits on the longest axis of the centroids' bounds until a range fits a cluster: every
 // cluster is a compact patch (fixed-size runs of a Morton order straddle the curve's jumps: on a
 // 100 x 100 terrain their boxes covered 2.9x its area, these 1.16x; see cluster_test).
-void splitRange(std::vector<TriangleCentroid>& items, std::size_t begin, std::size_t end, std::size_t leafSize,
+void splitRange(BulkVector<TriangleCentroid>& items, std::size_t begin, std::size_t end, std::size_t leafSize,
                 std::vector<std::pair<std::size_t, std::size_t>>& leaves) {
     while (end - begin > leafSize) {
         glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
@@ -59,8 +61,8 @@ ClusteredPrimitive clusterTriangles(const std::vector<glm::vec3>& positions, con
         out.insert(out.end(), indices.begin(), indices.end());
         return result;
     }
-    // (centroid, triangle): 16 bytes per triangle, freed on return.
-    std::vector<TriangleCentroid> items(triangles);
+    // (centroid, triangle): 16 bytes per triangle, freed on return; not zeroed, every one is written.
+    BulkVector<TriangleCentroid> items(triangles);
     for (std::size_t t = 0; t < triangles; ++t)
         items[t] = {(positions[indices[3 * t]] + positions[indices[3 * t + 1]] + positions[indices[3 * t + 2]]) / 3.0f,
                     std::uint32_t(t)};
@@ -68,7 +70,7 @@ ClusteredPrimitive clusterTriangles(const std::vector<glm::vec3>& positions, con
     splitRange(items, 0, triangles, trianglesPerCluster, leaves);
 
     const std::size_t base = out.size();
-    out.reserve(base + indices.size());
+    reserveUnwritten(out, base + indices.size());
     result.clusters.reserve(leaves.size());
     for (const auto& [first, last] : leaves) {
         MeshCluster cluster;

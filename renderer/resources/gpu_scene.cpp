@@ -120,7 +120,8 @@ bool GpuScene::uploadPendingTextures(const Scene& scene, double budgetMs) {
 
 GpuScene::GpuScene(const Scene& scene, bool deferTextures, LoadTimings* timings) {
     const auto start = std::chrono::steady_clock::now();
-    double clustersMs = 0.0;
+    const double cpuStart = processCpuMs();
+    LoadTimings splits;  // the cluster split's share, told apart from the upload's
     // The vertex and index buffers are sized first and written in place (mapped), one primitive
     // at a time: no CPU copy of the whole geometry exists beside the scene's. (On llvmpipe the
     // buffers are CPU memory too; a staging copy was a third copy at the upload's peak.)
@@ -153,7 +154,7 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures, LoadTimings* timings)
             const bool deformed = scene.meshes[m].skinned() || scene.meshes[m].morphed();
             clusterOrder.clear();
             {
-                StepTimer splitting(&clustersMs);
+                StepTimer splitting(&splits, &LoadStepTimes::clustersMs);
                 addClusters(gp, clusterTriangles(p.positions, p.indices, clusterOrder, kClusterTriangles,
                                                  deformed ? SIZE_MAX : kMinClusteredTriangles));
             }
@@ -164,7 +165,7 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures, LoadTimings* timings)
         // A mesh is drawn by clusters when a primitive of it is: its small ones become one cluster.
         GpuMesh& mesh = meshes_[m];
         auto hasClusters = [](const GpuPrimitive& gp) { return gp.clusters >= 0; };
-        StepTimer splitting(&clustersMs);
+        StepTimer splitting(&splits, &LoadStepTimes::clustersMs);
         if (std::any_of(mesh.primitives.begin(), mesh.primitives.end(), hasClusters))
             for (std::size_t k = 0; k < mesh.primitives.size(); ++k)
                 if (mesh.primitives[k].clusters < 0)
@@ -242,8 +243,11 @@ GpuScene::GpuScene(const Scene& scene, bool deferTextures, LoadTimings* timings)
     // llvmpipe copies buffer and texture data when it is specified; glFinish makes a GPU's
     // transfers count too.
     glFinish();
-    timings->clustersMs += clustersMs;
-    timings->uploadMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() - clustersMs;
+    timings->clustersMs += splits.clustersMs;
+    timings->cpu.clustersMs += splits.cpu.clustersMs;
+    timings->uploadMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() - splits.clustersMs;
+    timings->cpu.uploadMs += processCpuMs() - cpuStart - splits.cpu.clustersMs;
 }
 
 void GpuScene::addClusters(GpuPrimitive& primitive, ClusteredPrimitive clustered) {

@@ -35,7 +35,8 @@ if(NOT instances_2 GREATER instances_1 OR NOT unique_triangles_2 GREATER unique_
   message(FATAL_ERROR "x2 is not larger: ${instances_1} -> ${instances_2} instances")
 endif()
 foreach(row 1 2)
-  foreach(column load_s load_cpu_s peak_rss_mib parse_ms upload_ms forward_triangles shadow_triangles forward_draws)
+  foreach(column load_s load_cpu_s peak_rss_mib parse_ms upload_ms parse_cpu_ms upload_cpu_ms forward_triangles
+                 shadow_triangles forward_draws)
     if(NOT ${column}_${row} GREATER 0)
       message(FATAL_ERROR "row ${row}: ${column} = ${${column}_${row}}")
     endif()

@@ -33,6 +33,65 @@ TEST_F(Malformed, TheValidTriangleLoadsInBothContainers) {
     EXPECT_EQ(a.meshes[0].primitives[0].positions, b.meshes[0].primitives[0].positions);
 }
 
+// A GLB whose BIN chunk is large (4 MB and more, larger than its JSON) is handed to tinygltf without
+// the chunk's copy (scenes/gltf_glb_bin.cpp): the same scene as from a small GLB, and for a buffer
+// that does not fit the chunk, tinygltf's own refusal as before.
+TEST_F(Malformed, LargeGlbBinChunkLoadsLikeASmallOne) {
+    Bytes bin = triangleBin(2, 0.25f);
+    bin.resize(std::size_t(5) << 20, 0xAB);  // the triangle, then 5 MB that no view reads
+    json j = triangleJson("");
+    j["buffers"][0]["byteLength"] = bin.size();
+    const Scene large = expectLoads(write("large.glb", glb(j, bin)));
+    const Scene small = expectLoads(write("small.glb", glb(triangleJson(""), triangleBin(2, 0.25f))));
+    ASSERT_EQ(large.meshes.size(), 1u);
+    ASSERT_EQ(large.meshes[0].primitives.size(), 1u);
+    EXPECT_EQ(large.meshes[0].primitives[0].positions, small.meshes[0].primitives[0].positions);
+    EXPECT_EQ(large.meshes[0].primitives[0].indices, small.meshes[0].primitives[0].indices);
+    EXPECT_EQ(large.meshes[0].primitives[0].positions[0].x, 0.25f);
+
+    j["buffers"][0]["byteLength"] = bin.size() + 4;  // more than the chunk holds
+    expectError(write("short.glb", glb(j, bin)), "byteLength");
+    json second = triangleJson("");
+    second["buffers"][0]["byteLength"] = bin.size();
+    second["buffers"].push_back({{"byteLength", 4}});  // a second buffer without a URI: tinygltf's path
+    EXPECT_EQ(expectLoads(write("two.glb", glb(second, bin))).triangleCount(), 1u);
+}
+
+// Normalized uint16 texcoords through KHR_texture_transform are transformed from the exact
+// quotient u / 65535 in double (the accessors otherwise decode to float): the fixture is chosen so
+// that rounding the quotient to float first would change a result.
+TEST_F(Malformed, NormalizedTexcoordsAreTransformedAtFullPrecision) {
+    Bytes bin = triangleBin();
+    const std::uint16_t raw[6] = {1, 65534, 12345, 54321, 40000, 3};
+    for (std::uint16_t v : raw) append(bin, v);
+    json j = withTexture(triangleJson(), {{"uri", "tex.png"}});
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 12}});
+    j["accessors"].push_back(
+        {{"bufferView", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}});
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
+    const double offset[2] = {0.1, 0.2}, scale[2] = {3.7, 1.3}, rotation = 0.3;
+    j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+        {"offset", {offset[0], offset[1]}}, {"scale", {scale[0], scale[1]}}, {"rotation", rotation}};
+    write("tex.png", kPng2x1);
+    const Scene scene = expectLoads(writeGltf(j, bin));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const std::vector<glm::vec2>& uv = scene.meshes[0].primitives[0].texcoords;
+    ASSERT_EQ(uv.size(), 3u);
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    const glm::dmat3 transform(glm::dvec3(c * scale[0], -s * scale[0], 0.0), glm::dvec3(s * scale[1], c * scale[1], 0.0),
+                               glm::dvec3(offset[0], offset[1], 1.0));
+    int roundedWouldDiffer = 0;
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec2 exact(raw[2 * i] / 65535.0, raw[2 * i + 1] / 65535.0);
+        const glm::dvec3 want = transform * glm::dvec3(exact, 1.0);
+        EXPECT_EQ(uv[std::size_t(i)], glm::vec2(float(want.x), float(want.y))) << "vertex " << i;
+        const glm::dvec3 rounded = transform * glm::dvec3(glm::dvec2(glm::vec2(exact)), 1.0);
+        roundedWouldDiffer += glm::vec2(float(rounded.x), float(rounded.y)) != glm::vec2(float(want.x), float(want.y));
+    }
+    EXPECT_GT(roundedWouldDiffer, 0) << "the fixture does not tell a float-first decode apart";
+}
+
 TEST_F(Malformed, MissingFile) { expectError(dir / "nothere.gltf", "file not found"); }
 
 TEST_F(Malformed, EmptyFile) { expectError(write("empty.gltf", std::string()), "empty"); }
