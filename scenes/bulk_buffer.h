@@ -8,8 +8,6 @@
 //   Measured on the development VM (docs/large-worlds.md): first touch of fresh memory costs
 //   4.5-5.5 ms per MiB in 4 KiB pages (a fault each) and 1.2-2.8 ms in 2 MiB pages; it was over
 //   half of a large load's CPU time. Without THP the advice is ignored and nothing else changes.
-#include <sys/mman.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -18,6 +16,13 @@
 #include <vector>
 
 namespace shadowlab {
+
+// Blocks of kHugeFrom bytes and more mapped 2 MiB-aligned and advised MADV_HUGEPAGE, smaller ones
+// from operator new (scenes/bulk_buffer.cpp; out of line, so a build with ASan decides alone).
+void* bulkAllocate(std::size_t bytes);
+void bulkFree(void* p, std::size_t bytes) noexcept;
+// False under ASan, whose allocator then serves every block (red zones, the fuzzers' limits).
+bool bulkMapsLargeBlocks();
 
 template <class T>
 struct BulkAllocator {
@@ -32,28 +37,10 @@ struct BulkAllocator {
     T* allocate(std::size_t n) {
         static_assert(alignof(T) <= alignof(std::max_align_t));
         if (n > (std::size_t(-1) - 2 * kHugePage) / sizeof(T)) throw std::bad_array_new_length();
-        const std::size_t bytes = n * sizeof(T);
-        if (bytes < kHugeFrom) return static_cast<T*>(::operator new(bytes));
-        // Over-map by one huge page and unmap the ends, so the block starts on a 2 MiB boundary.
-        const std::size_t length = mappedLength(bytes);
-        void* raw = mmap(nullptr, length + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (raw == MAP_FAILED) throw std::bad_alloc();
-        const auto start = reinterpret_cast<std::uintptr_t>(raw);
-        const std::uintptr_t aligned = (start + kHugePage - 1) & ~std::uintptr_t(kHugePage - 1);
-        if (aligned > start) munmap(raw, aligned - start);
-        if (const std::uintptr_t tail = start + length + kHugePage - (aligned + length); tail > 0)
-            munmap(reinterpret_cast<void*>(aligned + length), tail);
-        madvise(reinterpret_cast<void*>(aligned), length, MADV_HUGEPAGE);
-        return reinterpret_cast<T*>(aligned);
+        return static_cast<T*>(bulkAllocate(n * sizeof(T)));
     }
 
-    void deallocate(T* p, std::size_t n) noexcept {
-        const std::size_t bytes = n * sizeof(T);
-        if (bytes < kHugeFrom)
-            ::operator delete(p);
-        else
-            munmap(p, mappedLength(bytes));
-    }
+    void deallocate(T* p, std::size_t n) noexcept { bulkFree(p, n * sizeof(T)); }
 
     // Default-initialisation (no zeroing) where the vector would value-initialise.
     template <class U>
@@ -67,8 +54,6 @@ struct BulkAllocator {
 
     friend bool operator==(const BulkAllocator&, const BulkAllocator&) noexcept { return true; }
 
-private:
-    static std::size_t mappedLength(std::size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 };
 
 template <class T>
@@ -77,14 +62,7 @@ using BulkVector = std::vector<T, BulkAllocator<T>>;
 // The whole 2 MiB pages inside [data, data + bytes) advised MADV_HUGEPAGE, for a block of 4 MiB
 // or more that is not written yet (glibc maps such blocks fresh, page-aligned): the same page
 // faults saved for arrays that outlive the load (the scene's vertices and indices).
-inline void adviseHugePages(const void* data, std::size_t bytes) {
-    constexpr std::uintptr_t kHugePage = BulkAllocator<char>::kHugePage;
-    if (!data || bytes < BulkAllocator<char>::kHugeFrom) return;
-    const auto start = reinterpret_cast<std::uintptr_t>(data);
-    const std::uintptr_t first = (start + kHugePage - 1) & ~(kHugePage - 1);
-    const std::uintptr_t last = (start + bytes) & ~(kHugePage - 1);
-    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-}
+void adviseHugePages(const void* data, std::size_t bytes);
 
 // reserve() on an empty vector, its new block advised for huge pages before anything is written.
 template <class Vector>
