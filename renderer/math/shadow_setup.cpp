@@ -170,31 +170,37 @@ std::vector<std::vector<ReceiverSample>> psmGuardSets(const ViewFrustum& view, c
     return sets;
 }
 
+// PSM on the view with its near plane pushed to params.psmNearPlane; where PSM falls back to
+// the focused SSM, that map is the one of the view's own near plane (ShadowParams::psmNearPlane).
+ShadowSetup psmWithPushedNearPlane(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
+                                   const ShadowParams& params) {
+    ViewFrustum pushed = view;
+    pushed.zNear = params.psmNearPlane;
+    ShadowParams own = params;
+    own.psmNearPlane = 0.0;
+    ShadowSetup psm = computeShadowSetup(pushed, light, sceneBounds, own);
+    if (!psm.valid || psm.diagnostics.fallback.empty()) return psm;
+    own.method = ShadowMethod::SsmFocused;
+    ShadowSetup ssm = computeShadowSetup(view, light, sceneBounds, own);
+    if (!ssm.valid) return psm;
+    // The diagnostics say what PSM tried and why the focused SSM is used instead.
+    ShadowDiagnostics& d = ssm.diagnostics;
+    d.method = ShadowMethod::Psm;
+    d.fallback = std::move(psm.diagnostics.fallback);
+    d.estimatedGainOverSsm = psm.diagnostics.estimatedGainOverSsm;
+    d.psmMoveBack = psm.diagnostics.psmMoveBack;
+    d.psmNear = psm.diagnostics.psmNear;
+    d.psmFar = psm.diagnostics.psmFar;
+    d.psmLightKind = psm.diagnostics.psmLightKind;
+    return ssm;
+}
+
 }  // namespace
 
 ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
                                const ShadowParams& params) {
-    if (params.method == ShadowMethod::Psm && params.psmNearPlane > view.zNear && params.psmNearPlane < view.zFar) {
-        ViewFrustum pushed = view;
-        pushed.zNear = params.psmNearPlane;
-        ShadowParams own = params;
-        own.psmNearPlane = 0.0;
-        ShadowSetup psm = computeShadowSetup(pushed, light, sceneBounds, own);
-        if (!psm.valid || psm.diagnostics.fallback.empty()) return psm;
-        own.method = ShadowMethod::SsmFocused;
-        ShadowSetup ssm = computeShadowSetup(view, light, sceneBounds, own);
-        if (!ssm.valid) return psm;
-        // The diagnostics say what PSM tried and why the focused SSM is used instead.
-        ShadowDiagnostics& d = ssm.diagnostics;
-        d.method = ShadowMethod::Psm;
-        d.fallback = std::move(psm.diagnostics.fallback);
-        d.estimatedGainOverSsm = psm.diagnostics.estimatedGainOverSsm;
-        d.psmMoveBack = psm.diagnostics.psmMoveBack;
-        d.psmNear = psm.diagnostics.psmNear;
-        d.psmFar = psm.diagnostics.psmFar;
-        d.psmLightKind = psm.diagnostics.psmLightKind;
-        return ssm;
-    }
+    if (params.method == ShadowMethod::Psm && params.psmNearPlane > view.zNear && params.psmNearPlane < view.zFar)
+        return psmWithPushedNearPlane(view, light, sceneBounds, params);
     ShadowSetup out;
     ShadowDiagnostics& diag = out.diagnostics;
     diag.method = params.method;
