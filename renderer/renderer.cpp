@@ -216,21 +216,27 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     } else if (settings.shadows && frame.light.castsShadow) {
         const bool psmAutoNear = settings.method == ShadowMethod::Psm && settings.psm.autoNear;
         const bool lispsmAutoFar = settings.method == ShadowMethod::Lispsm && settings.lispsm.autoVirtualFar;
-        // Neither feature on: no pre-pass at all.
-        const VisibleDepthRange visible =
-            psmAutoNear || lispsmAutoFar ? visibleDepthRange(frame, stats) : VisibleDepthRange{};
-        ViewFrustum shadowView = frame.shadowView;
-        // Stamminger & Drettakis 4.2, 6: the near plane as far as the visible geometry allows
+        // A warp chosen by measurement (LiSPSM's search, PSM's guard) needs this view's receivers:
+        // without them it judges at stand-ins that bound where receivers can be, not where they are
+        // (math/lispsm_search.h), so it gets the pre-pass whatever the other two features say and,
+        // on a cut, waits for its read-back. Neither: no pre-pass at all.
+        const bool warpNeedsReceivers = settings.method == ShadowMethod::Lispsm ||
+                                        (settings.method == ShadowMethod::Psm && settings.psm.guard);
+        const VisibleDepthRange visible = psmAutoNear || lispsmAutoFar || warpNeedsReceivers
+                                              ? visibleDepthRange(frame, stats, warpNeedsReceivers)
+                                              : VisibleDepthRange{};
+        const ViewFrustum& shadowView = frame.shadowView;
+        ShadowParams params = shadowParams(settings, shadowView, frame.shadowBounds);
+        // Stamminger & Drettakis 4.2, 6: PSM's near plane as far as the visible geometry allows
         // (halved: a quarter-resolution pixel may miss thin geometry in front).
         if (psmAutoNear && 0.5 * visible.nearest > shadowView.zNear)
-            shadowView.zNear = std::min(0.5 * visible.nearest, 0.5 * shadowView.zFar);
-        ShadowParams params = shadowParams(settings, shadowView, frame.shadowBounds);
+            params.psmNearPlane = std::min(0.5 * visible.nearest, 0.5 * shadowView.zFar);
         // Thesis 9.2.5: with a depth-only pass, z_f is the farthest visible depth.
         if (lispsmAutoFar && visible.farthest > 0.0)
             params.lispsm.virtualFar = std::clamp(visible.farthest, shadowView.zNear * 1.001, shadowView.zFar);
         // The nearest visible depth, symmetric to z_f: LiSPSM's warp search and PSM's guard
         // sample receivers from there on (math/lispsm_search.h).
-        if (visible.nearest > 0.0) params.lispsm.pseudoNear = visible.nearest;
+        if (visible.nearest > 0.0 && (psmAutoNear || lispsmAutoFar)) params.lispsm.pseudoNear = visible.nearest;
         params.receiverPoints = visible.receivers;
         params.fineReceiverPoints = visible.fineReceivers;  // spot lights only (visibleDepthRange)
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
@@ -288,7 +294,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
     return stats;
 }
 
-VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats) {
+VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& stats, bool waitOnCut) {
     DepthView view;
     view.view = frame.shadowView;  // the pre-pass sees what the camera the shadows are for sees
     const bool ownCamera = shadowCameraRequest_ != nullptr;
@@ -312,7 +318,8 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
         });
         drawScene(programs, frame, ownCamera ? shadowCameraVisible : frame.visible, kCameraSides, stats.depthPrePass);
     };
-    const VisibleDepthRange range = visibleDepth_.range(view, frame.settings.skip.asyncDepthReadback, drawDepth, stats);
+    const VisibleDepthRange range =
+        visibleDepth_.range(view, frame.settings.skip.asyncDepthReadback, drawDepth, stats, waitOnCut);
     unbindPassResources({0});
     return range;
 }

@@ -101,7 +101,7 @@ private:
     Renderer() = default;
     struct Frame;
     // Eye distances of the nearest and farthest visible geometry (visible_depth.h).
-    VisibleDepthRange visibleDepthRange(const Frame& frame, FrameStats& stats);
+    VisibleDepthRange visibleDepthRange(const Frame& frame, FrameStats& stats, bool waitOnCut = false);
     void cullView(Frame& frame, FrameStats& stats) const;
     void cullCasters(Frame& frame, FrameStats& stats) const;
     ShadowMapKey shadowMapKey(const Frame& frame) const;

@@ -11,6 +11,7 @@ const char* visibleDepthSourceName(VisibleDepthSource source) {
         case VisibleDepthSource::Cached: return "cached";
         case VisibleDepthSource::PreviousFrame: return "previous-frame";
         case VisibleDepthSource::Fallback: return "fallback";
+        case VisibleDepthSource::MeasuredOnCut: return "measured-on-cut";
     }
     return "unknown";
 }

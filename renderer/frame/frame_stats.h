@@ -30,7 +30,8 @@ enum class VisibleDepthSource {
     Measured,       // this frame's pre-pass, read back synchronously
     Cached,         // measured for exactly this view and scene state earlier: no pre-pass
     PreviousFrame,  // the last readback (one frame late), widened by the camera's move since
-    Fallback        // first frame or a cut: conservative values, the readback is still in flight
+    Fallback,       // first frame or a cut: conservative values, the readback is still in flight
+    MeasuredOnCut   // first frame or a cut with a warp that needs receivers: waited for this readback
 };
 
 struct FrameStats {

@@ -312,6 +312,7 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
         // near plane is the view's, its receivers start at the nearest visible depth.
         p.lispsm.virtualFar = 0.0;
         p.lispsm.pseudoNear = i == 0 && range.zNear > view.zNear ? range.zNear : 0.0;
+        p.lispsm.standInsJoinFewReceivers = false;  // few per split by construction; the fine grid checks
         switch (params.perSplit) {
         case SplitParameterization::Ssm:
             p.method = ShadowMethod::SsmFocused;

@@ -170,7 +170,8 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
         // The measured choice (lispsm_search.h): never worse than k = 0 (SSM) on its samples.
         const WarpSearchInput search{view,    light,    in.sceneBounds,        ls,
                                      bv,      in.visibleLit, in.visibleLitVertices, in.measuredReceivers,
-                                     zNearLs, els.x,    depthNear,             depthFar};
+                                     zNearLs, els.x,    depthNear,             depthFar,
+                                     params.standInsJoinFewReceivers};
         const WarpSearchResult found = searchWarp(search, std::isfinite(diag.nOptVirtual) ? 1.0 / diag.nOptVirtual : 0.0);
         k = found.warp;
         diag.warpSamples = found.samples;

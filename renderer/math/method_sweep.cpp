@@ -236,12 +236,12 @@ SweepCase makeCase(Rng& rng, bool spot, bool hard) {
 }
 
 // The renderer's parameters for this view, with the pre-pass depth range (renderer.cpp).
-ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, ViewFrustum& shadowView, bool receivers) {
+ShadowParams paramsFor(ShadowMethod method, const GroundSamples& g, const ViewFrustum& shadowView, bool receivers) {
     ShadowParams p;
     p.method = method;
     p.collectPolygons = false;
     if (method == ShadowMethod::Psm && 0.5 * g.nearest > shadowView.zNear)
-        shadowView.zNear = std::min(0.5 * g.nearest, 0.5 * shadowView.zFar);
+        p.psmNearPlane = std::min(0.5 * g.nearest, 0.5 * shadowView.zFar);
     p.lispsm.virtualFar = std::clamp(g.farthest, shadowView.zNear * 1.001, shadowView.zFar);
     p.lispsm.pseudoNear = g.nearest;
     // The pre-pass's receiver grid (renderer/passes/visible_depth.cpp, ShadowParams::kReceiverGridX/Y).
@@ -256,9 +256,8 @@ SweepViewFigure figure(const SweepCase& c, const GroundSamples& g, ShadowMethod 
     SweepViewFigure out;
     out.p99 = std::numeric_limits<double>::quiet_NaN();
     if (g.points.empty()) return out;
-    ViewFrustum shadowView = c.view;
-    const ShadowParams params = paramsFor(method, g, shadowView, o.measuredReceivers);
-    const ShadowSetup setup = computeShadowSetup(shadowView, c.light, c.scene, params);
+    const ShadowParams params = paramsFor(method, g, c.view, o.measuredReceivers);
+    const ShadowSetup setup = computeShadowSetup(c.view, c.light, c.scene, params);
     out.fallback = setup.diagnostics.fallback;
     if (!setup.valid) return out;
     FootprintCamera cam;

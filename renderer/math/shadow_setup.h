@@ -64,6 +64,10 @@ struct LispsmParams {
     double pseudoNear = 0.0;
     bool overrideN = false;      // use `n` instead of n_opt
     double n = 1.0;
+    // Where fewer than kEnoughMeasuredReceivers measured receivers face the light, the stand-ins
+    // join them in the warp search (math/lispsm_search.h). A cascade split turns it off: its
+    // receivers are few by construction and its warp is checked on the fine grid instead.
+    bool standInsJoinFewReceivers = true;
 };
 
 // A visible surface point and its normal (unit), e.g. from the depth pre-pass.
@@ -91,6 +95,12 @@ struct ShadowParams {
     // depth pre-pass samples (math/cascades_sdsm.h): V n S is clipped by them before B is extruded
     // toward the light, so the map covers those receivers and their casters only. Empty: V n S.
     std::vector<glm::dvec4> receiverBounds;
+    // PSM: the near plane pushed towards the nearest visible geometry (Stamminger & Drettakis 4.2,
+    // 6); <= the view's own: none. Only PSM's own matrix is built with it: where the guard keeps
+    // the focused SSM, that is the map of the view's own near plane, as the SSM method's (a spot
+    // map's frame turns with the nearest visible point, and the pushed plane's SSM lost 1.52x on a
+    // sweep view, seed 7).
+    double psmNearPlane = 0.0;
     // Fill the polygon lists of ShadowDiagnostics (B, V, S, L, P). Scalars are always filled.
     bool collectPolygons = true;
 };

@@ -62,6 +62,9 @@ Settings canonicalSettings(ShadowMethod method) {
     s.psm.guard = false;     // the bare PSM: with n = 0.1, f = 70 its far error ties SSM's near error
     s.lispsm.autoVirtualFar = false;
     s.lispsm.virtualFar = 0.0;  // the real far plane: eq. 8.9's z_f
+    // Eq. 8.10's n itself, not the warp the search measures over the pre-pass receivers.
+    s.lispsm.overrideN = true;
+    s.lispsm.n = lispsmOptimalN(canonicalTheory());
     s.filter.filter = ShadowFilter::Nearest;
     return s;
 }

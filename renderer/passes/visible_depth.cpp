@@ -192,7 +192,8 @@ VisibleDepthPrePass::Slot& VisibleDepthPrePass::freeSlot() {
 }
 
 VisibleDepthRange VisibleDepthPrePass::range(DepthView view, bool async,
-                                             const std::function<void(const glm::dmat4&)>& drawDepth, FrameStats& stats) {
+                                             const std::function<void(const glm::dmat4&)>& drawDepth, FrameStats& stats,
+                                             bool waitOnCut) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     auto report = [&](VisibleDepthSource source) {
@@ -235,6 +236,18 @@ VisibleDepthRange VisibleDepthPrePass::range(DepthView view, bool async,
     stats.needsAnotherFrame = true;  // the measurement of this view arrives with the next frame
 
     if (!haveLatest_ || view.isCutFrom(latestView_, latest_)) {
+        if (!waitOnCut) {
+            report(VisibleDepthSource::Fallback);
+            return {};
+        }
+        // Without receivers the warps fall back to stand-ins that bound where receivers can be,
+        // not where they are (math/lispsm_search.h): wait for this frame's own measurement.
+        collect(false, &view);
+        if (haveLatest_ && latestView_.sameAs(view)) {
+            stats.needsAnotherFrame = false;
+            report(VisibleDepthSource::MeasuredOnCut);
+            return latest_;
+        }
         report(VisibleDepthSource::Fallback);
         return {};
     }

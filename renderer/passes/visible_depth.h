@@ -13,7 +13,9 @@
 //   - otherwise the pre-pass is issued and the last measurement is used, widened by the distance
 //     the eye moved since (a depth along the view axis changes by at most that much under a
 //     translation); a rotation of more than kCutDegrees, another projection or another scene is a
-//     cut, and the frame uses conservative values: no near-plane push, z_f from the scene bounds.
+//     cut, and the frame uses conservative values: no near-plane push, z_f from the scene bounds;
+//     unless the caller asks to wait on a cut (`waitOnCut`: a warp that needs receivers), when the
+//     frame waits for this very measurement (a stall on that frame only).
 #include "frame/frame_setup.h"
 #include "frame/frame_stats.h"
 #include "gl/gl_objects.h"
@@ -64,7 +66,7 @@ public:
     // into the bound framebuffer (depth test set up). Sets stats.visibleDepth and, in async mode
     // when the value is an estimate, stats.needsAnotherFrame.
     VisibleDepthRange range(DepthView view, bool async, const std::function<void(const glm::dmat4&)>& drawDepth,
-                            FrameStats& stats);
+                            FrameStats& stats, bool waitOnCut = false);
 
     // A readback is in flight (a later frame will take its result).
     bool pending() const;

@@ -37,8 +37,9 @@ SweepCase sweepCase(const CaseNumbers& n) {
     return c;
 }
 
-double ratioToSsm(const SweepCase& c, ShadowMethod m, std::string* fallback = nullptr) {
-    const SweepOptions o;
+double ratioToSsm(const SweepCase& c, ShadowMethod m, std::string* fallback = nullptr, bool receivers = true) {
+    SweepOptions o;
+    o.measuredReceivers = receivers;
     const SweepViewFigure ssm = sweepViewFigure(c, ShadowMethod::SsmFocused, o);
     const SweepViewFigure warp = sweepViewFigure(c, m, o);
     if (fallback) *fallback = warp.fallback;
@@ -77,10 +78,11 @@ TEST(ReceiverSamples, PsmGuardWithoutMeasuredReceiversInTheLightKeepsSsm) {
     const ShadowSetup ssm = computeShadowSetup(c.view, c.light, c.scene, params);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) EXPECT_NEAR(psm.worldToShadowClip[i][j], ssm.worldToShadowClip[i][j], 1e-12);
-    // Without any measurement (no pre-pass) the stand-ins still judge it: PSM is not refused.
+    // Without any measurement (no pre-pass) under a spot light PSM is kept from the stand-ins'
+    // judgement too, and the fallback says so.
     params.method = ShadowMethod::Psm;
     params.receiverPoints.clear();
-    EXPECT_EQ(computeShadowSetup(c.view, c.light, c.scene, params).diagnostics.fallback.find("no measured receiver"),
+    EXPECT_NE(computeShadowSetup(c.view, c.light, c.scene, params).diagnostics.fallback.find("no receiver measured under"),
               std::string::npos);
 }
 
@@ -103,6 +105,50 @@ TEST(ReceiverSamples, SmallSpotConeIsMeasuredAtTheFineGrid) {
                                    136.28, {0.62934, -0.48304, -0.60878}, {83.8211, 11.2478, -10.2593}, 59.48, 115.18,
                                    56.43});
     EXPECT_LE(ratioToSsm(c, ShadowMethod::Lispsm), 1.7);
+}
+
+// Seeds 6 and 8's worst LiSPSM sun views: the eye looks up, the ground is a strip at the image's
+// bottom edge and one grid receiver lies on it; the warp chosen over it lost 1.92x and 1.67x SSM.
+// With fewer than 16 measured receivers the stand-ins join them.
+TEST(ReceiverSamples, FewMeasuredReceiversAreJoinedByTheStandIns) {
+    const SweepCase seed6 = sweepCase({{-127.013, 26.1363, -105.776}, {-0.99577, 0.0283215, 0.0874024}, 79.17, 0.1345,
+                                       128.43, {0.66465, -0.33357, -0.66856}, {}, 0.0, 163.67, 9.502});
+    EXPECT_LE(ratioToSsm(seed6, ShadowMethod::Lispsm), 1.05);
+    const SweepCase seed8 = sweepCase({{-31.5558, 27.6477, 38.7349}, {-0.967047, 0.0145039, -0.254185}, 68.55, 0.6586,
+                                       129.67, {-0.42196, -0.22718, -0.87769}, {}, 0.0, 68.615, 15.8});
+    EXPECT_LE(ratioToSsm(seed8, ShadowMethod::Lispsm), 1.05);
+}
+
+// Seed 7's worst PSM spot view: the cone falls between the coarse and the fine grid's points, so
+// none of the measured receivers is in it; the stand-ins alone let PSM through (1.81x SSM). The
+// pre-pass ran, so PSM is refused as when its coarse grid misses the cone.
+TEST(ReceiverSamples, PsmGuardRefusesWhenNeitherGridHasAReceiverInTheCone) {
+    const SweepCase c = sweepCase({{988.445, 6.65791, -937.011}, {0.790634, -0.306873, -0.529837}, 77.31, 0.21, 233.2,
+                                   {0.92187, -0.23616, 0.30723}, {1057.61, 8.07729, -1015}, 37.07, 1247.8, 59.08});
+    std::string fallback;
+    EXPECT_LE(ratioToSsm(c, ShadowMethod::Psm, &fallback), 1.05);
+    EXPECT_NE(fallback.find("no measured receiver lies in the light"), std::string::npos) << fallback;
+}
+
+// Seed 7's other PSM spot view: the guard refused PSM, but the focused SSM it fell back to was
+// the one of PSM's pushed near plane (the spot map's frame turns with the nearest visible point):
+// 1.52x the SSM method's. The fallback is now the SSM of the view's own near plane.
+TEST(ReceiverSamples, PsmFallbackIsTheSsmOfTheViewsOwnNearPlane) {
+    const SweepCase c = sweepCase({{-118.469, 26.5849, 36.0844}, {0.88613, 0.0332137, -0.462245}, 89.24, 0.49, 135.11,
+                                   {-0.58671, -0.64447, 0.49033}, {-72.4126, 16.9687, 7.20731}, 43.19, 285.26, 19.59});
+    std::string fallback;
+    EXPECT_NEAR(ratioToSsm(c, ShadowMethod::Psm, &fallback), 1.0, 1e-9);
+    EXPECT_NE(fallback.find("focused SSM used"), std::string::npos) << fallback;
+}
+
+// Seed 1's worst LiSPSM spot view without receivers: a 60 deg spot 27 m up over an eye 26 m up;
+// the stand-ins (L n V n S up to the scene box's top) are mostly air and asked for f/n far above
+// what the ground needs: 4.47x SSM. Without receivers a spot's warp is taken weaker.
+TEST(ReceiverSamples, SpotStandInsAloneWarpLess) {
+    const SweepCase c = sweepCase({{41.9352, 26.347, -44.8547}, {0.657165, -0.636104, 0.404359}, 85.55, 0.3556,
+                                   671.47, {-0.26516, -0.90614, -0.32955}, {105.169, 27.5673, -0.884332}, 59.78,
+                                   71.378, 37.31});
+    EXPECT_LE(ratioToSsm(c, ShadowMethod::Lispsm, nullptr, false), 1.5);
 }
 
 TEST(ReceiverSamples, FineGridJoinsOnlyForSpotsWithFewCoarseReceiversInTheCone) {

@@ -226,7 +226,10 @@ TEST(Psm, SpotLightBehindTheCameraIsInverted) {
     l.position = {0, 25, 140};
     l.direction = glm::normalize(glm::dvec3(0, 0, -20) - l.position);
     l.outerConeAngle = glm::radians(30.0);
-    const ShadowSetup s = setupFor(v, l, terrain(), ShadowMethod::Psm);
+    ShadowParams p;
+    p.method = ShadowMethod::Psm;
+    p.psmGuard = false;  // the parameterization itself (without receivers the guard keeps SSM here)
+    const ShadowSetup s = computeShadowSetup(v, l, terrain(), p);
     ASSERT_TRUE(s.valid);
     EXPECT_EQ(s.diagnostics.psmLightKind, PostPerspectiveLight::InvertedPoint);
     EXPECT_TRUE(s.reverseDepthTest);

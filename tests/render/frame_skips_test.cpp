@@ -251,6 +251,7 @@ TEST_F(FrameSkips, VisibleDepthArrivesOneFrameLateAndIsKeptWhileTheViewStays) {
     const Scene scene = planeBoxScene();
     Settings s = lookAt({6.0, 5.0, 8.0}, {0.0, 0.5, 0.0});
     s.method = ShadowMethod::Psm;  // auto near on
+    s.psm.guard = false;           // the near plane alone does not wait on a cut
     render(scene, s);              // creates renderer and target
     Settings other = s;
     other.camera.yawDeg += 40.0;  // a cut
@@ -269,10 +270,23 @@ TEST_F(FrameSkips, VisibleDepthArrivesOneFrameLateAndIsKeptWhileTheViewStays) {
     other.skip.asyncDepthReadback = false;
     EXPECT_EQ(firstFrame(scene, other).visibleDepth, VisibleDepthSource::Measured);
     other.psm.autoNear = false;
+    other.psm.guard = true;  // the guard alone still needs the receivers
+    EXPECT_EQ(firstFrame(scene, other).visibleDepth, VisibleDepthSource::Measured);
+    other.psm.guard = false;
     f = firstFrame(scene, other);
     EXPECT_EQ(f.visibleDepth, VisibleDepthSource::NotNeeded);
     EXPECT_EQ(f.depthPrePass.drawCalls, 0u);
     EXPECT_FALSE(f.needsAnotherFrame);
+    // PSM's guard judges at the receivers: on a cut the frame waits for its own measurement.
+    Settings guarded = other;
+    guarded.skip.asyncDepthReadback = true;
+    guarded.psm.guard = true;
+    guarded.camera.yawDeg -= 80.0;
+    f = firstFrame(scene, guarded);
+    EXPECT_EQ(f.visibleDepth, VisibleDepthSource::MeasuredOnCut);
+    EXPECT_FALSE(f.needsAnotherFrame);
+    EXPECT_GT(f.depthPrePass.drawCalls, 0u);
+    EXPECT_EQ(firstFrame(scene, guarded).visibleDepth, VisibleDepthSource::Cached);
 }
 
 TEST_F(FrameSkips, StatsJsonCarriesTheFiguresOfTheFrame) {
