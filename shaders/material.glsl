@@ -16,12 +16,24 @@ layout(std430, binding = 1) readonly buffer MaterialBuffer { MaterialData materi
 uniform int uMaterial;
 layout(binding = 0) uniform sampler2D uBaseColorTexture;
 
+// MATERIAL_BASE_LEVEL (the shadow pass): the texture's full-resolution level. A map texel stores
+// the surface where the light ray through its centre meets it, so a mask decides at that point, as
+// the ray-cast truth does; a mip level averages the texel's footprint and thin features (leaves,
+// chains) fall below the cut-off and stop casting.
+vec4 baseColorTexel(vec2 uv) {
+#ifdef MATERIAL_BASE_LEVEL
+    return textureLod(uBaseColorTexture, uv, 0.0);
+#else
+    return texture(uBaseColorTexture, uv);
+#endif
+}
+
 vec4 baseColor(vec2 uv) {
     vec4 c = materials[uMaterial].baseColorFactor;
 #if !defined(MATERIAL_TEXTURED)
-    if (materials[uMaterial].modeAndTexture.y != 0) c *= texture(uBaseColorTexture, uv);
+    if (materials[uMaterial].modeAndTexture.y != 0) c *= baseColorTexel(uv);
 #elif MATERIAL_TEXTURED
-    c *= texture(uBaseColorTexture, uv);
+    c *= baseColorTexel(uv);
 #endif
     return c;
 }

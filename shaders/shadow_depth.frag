@@ -1,5 +1,6 @@
 #version 450 core
 // Shadow pass: depth only; alpha-masked casters (foliage) cut their holes.
+#define MATERIAL_BASE_LEVEL
 #include "material.glsl"
 
 in vec2 vTexcoord;

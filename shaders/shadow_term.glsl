@@ -39,28 +39,46 @@ uniform bool uUseBlurredTerm;
 uniform ivec2 uViewportOrigin;
 layout(binding = 2) uniform sampler2D uBlurredTerm;
 
-// World size of one map texel at p (the larger of the two image axes): the derivative of the
-// projective map, d(x/w)/dp = (row_x w - row_w x) / w^2; one texel is 2 / size in NDC.
-float texelWorldSize(mat4 m, vec4 clip) {
+// The derivative of the projective map at p, d(x/w)/dp and d(y/w)/dp = (row w - row_w x) / w^2,
+// in NDC per world unit.
+void mapJacobian(mat4 m, vec4 clip, out vec3 gx, out vec3 gy) {
     vec3 rowX = vec3(m[0][0], m[1][0], m[2][0]);
     vec3 rowY = vec3(m[0][1], m[1][1], m[2][1]);
     vec3 rowW = vec3(m[0][3], m[1][3], m[2][3]);
-    vec3 gx = (rowX * clip.w - rowW * clip.x) / (clip.w * clip.w);
-    vec3 gy = (rowY * clip.w - rowW * clip.y) / (clip.w * clip.w);
+    gx = (rowX * clip.w - rowW * clip.x) / (clip.w * clip.w);
+    gy = (rowY * clip.w - rowW * clip.y) / (clip.w * clip.w);
+}
+
+// World size of one map texel at p (the larger of the two image axes); one texel is 2 / size in NDC.
+float texelWorldSize(mat4 m, vec4 clip) {
+    vec3 gx, gy;
+    mapJacobian(m, clip, gx, gy);
     return 2.0 * uShadowTexel.x / max(min(length(gx), length(gy)), 1e-30);
 }
 
 // Normal-offset bias (Holbert, "Normal offset shadows", GDC 2011): move the lookup along the
-// normal by texels of world size, times sin(angle to the light), so surfaces facing the light
-// move little and grazing ones (where depth acne lives) move a texel or more.
+// normal n. A receiver plane at angle a to the light, looked up a distance d off itself along n,
+// lies d / cos a in front of the plane along the light ray, while the plane's depth changes by
+// w tan a over a texel of width w (measured along n's projection across the light rays, the one
+// direction the plane's depth changes in). Clearing k texels takes d = k w sin a: grazing
+// receivers move most, facing ones not at all. w is the texel's width in that direction, not the
+// larger texel axis: warped maps (PSM, LiSPSM) have texels many times longer one way than the
+// other, and an offset by the long axis reaches past nearby occluders (false light at contacts).
 vec3 normalOffsetPosition(vec3 p, vec3 n, int split) {
     if (uNormalOffset <= 0.0) return p;
     vec3 toLight;
     incidentLight(p, toLight);
-    float cosAngle = clamp(abs(dot(n, toLight)), 0.0, 1.0);
-    float sinAngle = sqrt(1.0 - cosAngle * cosAngle);
-    vec4 clip = splitClip(p, split);
-    return p + n * (uNormalOffset * texelWorldSize(splitMatrix(split), clip) * sinAngle);
+    float cosAngle = dot(n, toLight);
+    vec3 across = n - cosAngle * toLight;  // |across| = sin a
+    float sinAngle = length(across);
+    if (!(sinAngle > 1e-6)) return p;
+    vec3 gx, gy;
+    mapJacobian(splitMatrix(split), splitClip(p, split), gx, gy);
+    // NDC per world unit along the direction across the light rays; one texel is 2 / size in NDC.
+    vec3 u = across / sinAngle;
+    float ndcPerUnit = length(vec2(dot(gx, u), dot(gy, u)));
+    float texelWidth = 2.0 * uShadowTexel.x / max(ndcPerUnit, 1e-30);
+    return p + n * (uNormalOffset * texelWidth * sinAngle);
 }
 
 // A point in the map's space: NDC x, y and the depth the map stores (linear or window z).

@@ -67,7 +67,7 @@ std::vector<Sample> makeSamples(const WarpSearchInput& in, std::size_t& measured
     // strip of ground at the image's bottom edge chose a warp that lost 1.92x SSM's p99, sweep
     // seed 6), so the stand-ins join them: seeds 6 and 8's worst sun views 1.92x, 1.67x -> 1.00x,
     // 1.01x. With their up normal only: the same on seeds 1, 6-8 and seed 1's hard views, at
-    // 1.60x SSM's setup instructions instead of 1.69x (8 receivers, docs/measurements.md).
+    // 1.60x SSM's setup instructions instead of 1.69x (8 receivers, docs/warp-sweep.md).
     if (receivers.empty() || (in.standInsJoinFewReceivers && receivers.size() < kEnoughMeasuredReceivers)) {
         const std::vector<ReceiverSample> standIn =
             standInReceiverSamples(v, in.light, in.visibleLit, in.visibleLitVertices, in.depthNear, in.depthFar);

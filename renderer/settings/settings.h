@@ -87,8 +87,9 @@ struct BiasSettings {
     double slopeFactor = 2.0;      // glPolygonOffset factor (paper defaults 2.0 / 4.0)
     double slopeUnits = 4.0;       // glPolygonOffset units
     // Normal-offset bias: the lookup moves along the receiver's normal by this many texels (the
-    // map's world texel size at the point) times sin(angle between normal and light), so grazing
-    // receivers move most; combinable with every mode above. 0 = off.
+    // map texel's world width along the normal's direction across the light rays) times sin(angle
+    // between normal and light), so grazing receivers move most; combinable with every mode
+    // above. 0 = off.
     double normalOffset = 0.0;
     // mode == Adaptive: what is subtracted besides the receiver plane, in texels of the receiver's
     // depth slope (the neighbouring facets of a curved or bumpy surface, the warped maps' non-linear

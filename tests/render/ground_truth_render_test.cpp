@@ -122,5 +122,60 @@ TEST_F(GroundTruthRender, MapAndTruthAgreeOnWhichFacesCast) {
         }
 }
 
+// Ground under a 4 x 4 m alpha-masked quad (double-sided, cut-off 0.6) at y = 1.5 whose 1024^2
+// texture is opaque in a random half of its texels: every mip level averages to about 0.5, below
+// the cut-off, while the full-resolution texture the rays test keeps half the quad. A 256^2 map
+// minifies the texture about 16 times.
+Scene groundAndMaskedQuad() {
+    Scene s = planeBoxScene(glm::normalize(glm::dvec3(0.3, -1.0, 0.2)));
+    Texture t;
+    t.name = "RandomHalf";
+    t.width = t.height = 1024;
+    t.rgba8.assign(std::size_t(t.width) * t.height * 4, 255);
+    std::uint32_t state = 12345u;
+    for (std::size_t i = 0; i < std::size_t(t.width) * t.height; ++i) {
+        state = state * 1664525u + 1013904223u;  // Numerical Recipes' LCG
+        t.rgba8[4 * i + 3] = (state >> 31) != 0 ? 255 : 0;
+    }
+    s.textures.push_back(std::move(t));
+    Material leaf{"Leaves", {0.2f, 0.6f, 0.2f, 1.0f}};
+    leaf.baseColorTexture = 0;
+    leaf.alphaMode = AlphaMode::Mask;
+    leaf.alphaCutoff = 0.6f;
+    leaf.doubleSided = true;
+    s.materials[1] = leaf;
+    Primitive quad;
+    quad.material = 1;
+    const float y = 1.5f;
+    quad.positions = {{-2.0f, y, -2.0f}, {2.0f, y, -2.0f}, {2.0f, y, 2.0f}, {-2.0f, y, 2.0f}};
+    quad.normals.assign(4, {0.0f, 1.0f, 0.0f});
+    quad.texcoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    quad.indices = {0, 3, 2, 0, 2, 1};
+    for (const glm::vec3& v : quad.positions) quad.bounds.extend(glm::dvec3(v));
+    s.meshes[1] = {"Leaves", {quad}};
+    s.instances.pop_back();
+    s.nodes.pop_back();
+    s.bounds = s.instances[0].worldBounds;
+    addInstance(s, 1, glm::dmat4(1.0));
+    return s;
+}
+
+// The map must cast what the rays see: a masked caster decides at the point the light ray meets
+// it, on the full-resolution texture. Rendered shadow under the quad within a factor 1.5 of the
+// truth's (the two sample the random mask at different points, so per pixel they may differ).
+TEST_F(GroundTruthRender, AlphaMaskedCasterShadowsAsMuchAsTheTruthSays) {
+    const Scene scene = groundAndMaskedQuad();
+    Settings s = lookAt({4.0, 1.2, 3.5}, {0.4, 0.0, 0.3});  // under the quad, onto its shadow
+    s.method = ShadowMethod::SsmFocused;
+    s.shadowMapSize = 256;
+    const Result r = compare(scene, s);
+    ASSERT_GT(r.comparison.receivers, 20000u);
+    ASSERT_GT(r.truthDark, 1000u);  // half the quad's shadow on the ground
+    const double renderedDark =
+        double(r.truthDark) - double(r.comparison.falseLight) + double(r.comparison.falseShadow);
+    EXPECT_GT(renderedDark, double(r.truthDark) / 1.5) << "truth dark " << r.truthDark << ", rendered " << renderedDark;
+    EXPECT_LT(renderedDark, double(r.truthDark) * 1.5) << "truth dark " << r.truthDark << ", rendered " << renderedDark;
+}
+
 }  // namespace
 }  // namespace shadowlab::test
