@@ -158,7 +158,8 @@ void runScene(Renderer& renderer, const BenchSpec& spec, const BenchScene& entry
         info.bvhSeconds = rays->buildSeconds();
     }
     results.scenes.push_back(info);
-    ScenePose posed{captureRestPose(*scene)};
+    ScenePose posed;
+    posed.rest = captureRestPose(*scene);
     const std::vector<BenchCamera> cameras = entry.cameras.empty() ? std::vector<BenchCamera>{{"first", 0, false}}
                                                                      : entry.cameras;
     RenderTarget target(spec.width, spec.height);
