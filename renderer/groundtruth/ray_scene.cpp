@@ -13,7 +13,9 @@
 
 namespace shadowlab {
 
-namespace {
+// Named, not anonymous: RayScene::Impl holds these types, and in a unity build this file is not
+// the main file, where GCC warns about a class with members of internal linkage.
+namespace ray_scene_detail {
 
 // What the occlusion filter needs to cut an alpha-masked triangle's holes (glTF MASK): the
 // primitive's texture coordinates and triangles, its base colour alpha and texture, the cut-off.
@@ -119,7 +121,8 @@ void reportEmbreeError(void* userPtr, RTCError, const char* message) {
     if (error->empty()) *error = std::string("Embree: ") + (message ? message : "unknown error");
 }
 
-}  // namespace
+}  // namespace ray_scene_detail
+using namespace ray_scene_detail;
 
 struct RayScene::Impl {
     RTCDevice device = nullptr;

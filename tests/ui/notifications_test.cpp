@@ -58,7 +58,9 @@ TEST_F(NotificationTest, AnErrorIsNeverCoveredByTheStatsWindowAndStaysUntilDismi
         const ImRect messages = windowRect("##notifications"), stats = windowRect("Stats");
         ASSERT_GT(messages.GetHeight(), 40.0f);  // the error's lines and the dismiss button
         // Beside an enlarged observer (4:3, nearly the area's width) there is no room: left out.
-        if (enlarged != app::InsetKind::Observer) EXPECT_GT(stats.GetHeight(), 40.0f) << int(enlarged);
+        if (enlarged != app::InsetKind::Observer) {
+            EXPECT_GT(stats.GetHeight(), 40.0f) << int(enlarged);
+        }
         EXPECT_FALSE(overlaps(messages, stats)) << int(enlarged);
         for (const InsetRect* inset : {&layout.shadowMapInset, &layout.lightViewInset, &layout.observerInset})
             EXPECT_FALSE(overlaps(stats, *inset)) << int(enlarged);  // nor the insets and their titles

@@ -43,7 +43,7 @@ TEST_F(ImGuiFrameTest, ControlWindowWithoutInputChangesNothing) {
     Scene scene = sceneWithLightsAndCameras();
     ObserverView observer;
     ViewStateUi viewState;
-    ControlContext ctx{&stats, &scene, AnimationInfo{3.7, 1, 2}, 42.0, &observer, &viewState};
+    ControlContext ctx{&stats, &scene, AnimationInfo{3.7, 1, 2, {}}, 42.0, &observer, &viewState};
     for (int i = 0; i < 3; ++i) {
         ControlResult r;
         frame([&] { r = drawControlWindow(settings, ctx, 1280, 720); });
