@@ -216,12 +216,4 @@ void Converter::countAccessorUsers() {
         }
 }
 
-bool finiteAll(const std::vector<double>& v) {
-    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
-}
-
-bool finiteAll(const BulkVector<float>& v) {
-    return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
-}
-
 }  // namespace shadowlab::gltf

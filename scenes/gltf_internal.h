@@ -18,6 +18,8 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -213,7 +215,10 @@ private:
     int morphTargetCount(int node) const;  // of the node's mesh, 0 without
 };
 
-bool finiteAll(const std::vector<double>& v);
-bool finiteAll(const BulkVector<float>& v);
+// Every element finite (doubles of the JSON's factors, decoded float attributes alike).
+template <class Values>
+bool finiteAll(const Values& v) {
+    return std::all_of(v.begin(), v.end(), [](auto x) { return std::isfinite(x); });
+}
 
 }  // namespace shadowlab::gltf
