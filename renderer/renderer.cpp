@@ -238,7 +238,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& settings, double
         // sample receivers from there on (math/lispsm_search.h).
         if (visible.nearest > 0.0 && (psmAutoNear || lispsmAutoFar)) params.lispsm.pseudoNear = visible.nearest;
         params.receiverPoints = visible.receivers;
-        params.fineReceiverPoints = visible.fineReceivers;  // spot lights only (visibleDepthRange)
+        params.fineReceiverPoints = visible.fineReceivers;  // spot lights and the image check (visibleDepthRange)
         stats.virtualFarUsed = params.method == ShadowMethod::Lispsm ? params.lispsm.virtualFar : 0.0;
         frame.shadow = computeShadowSetup(shadowView, shadowLight(frame.light), frame.shadowBounds, params);
         stats.shadow = frame.shadow.diagnostics;
@@ -308,9 +308,13 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     view.height = std::max(16, frame.viewport.height / 4);
     view.sceneLoad = sceneLoads_;
     view.sceneVersion = sceneVersion_;
-    // Spot lights (a cone lighting a few grid points) and cascades (a split holding a few of them)
-    // also sample the fine grid (math/lispsm_search.h, math/cascades.h).
-    view.fineReceivers = frame.light.type == LightType::Spot || frame.settings.csm.enabled;
+    // Spot lights (a cone lighting a few grid points), cascades (a split holding a few of them)
+    // and the image check of a warp also sample the fine grid (math/lispsm_search.h,
+    // math/cascades.h, math/image_check.h).
+    const Settings& st = frame.settings;
+    const bool imageCheck = (st.method == ShadowMethod::Lispsm && st.lispsm.imageCheck) ||
+                            (st.method == ShadowMethod::Psm && st.psm.guard);
+    view.fineReceivers = frame.light.type == LightType::Spot || st.csm.enabled || imageCheck;
     view.samples = frame.settings.csm.enabled && frame.settings.csm.placement == SplitPlacement::Sdsm;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {

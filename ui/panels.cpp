@@ -201,6 +201,10 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtual
     changed |= checkbox("override n", l.overrideN,
                         "Use a manual n instead of n_opt (thesis 8.2, 9.2.5). Small n = strong perspective warp "
                         "(PSM-like), large n = uniform (SSM-like).");
+    changed |= checkbox("check over the image", l.imageCheck,
+                        "Keep the searched warp only where its p95 and p99 texel footprint over the depth "
+                        "pre-pass's 32 x 24 grid are within 1.05x the uniform map's; else a weaker warp or the "
+                        "focused SSM (the read-out below says how much the searched warp lost).");
     ImGui::BeginDisabled(!l.overrideN);
     {
         // Without the override the slider shows (greyed) the n this frame used, not the stored one.
@@ -217,6 +221,11 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtual
 
     ImGui::Separator();
     readout("n used", formatNumber(d.nUsed), "The n the LiSPSM matrix was built with this frame (+inf = uniform).");
+    readout("image check", d.imageCheckSamples > 0 ? formatNumber(d.imageCheckLoss) + "x over " +
+                                                         std::to_string(d.imageCheckSamples) + " px"
+                                                   : std::string("not run"),
+            "The searched warp's p95/p99 texel footprint over the pre-pass grid divided by the uniform map's "
+            "(> 1.05: it was weakened or replaced by the focused SSM).");
     readout("n_opt (real z_f)", formatNumber(d.nOptReal), "Thesis eq. 8.13 (9.2.5) evaluated with the real far plane.");
     readout("n_opt (virtual z_f)", formatNumber(d.nOptVirtual),
             "Thesis eq. 8.13 with the virtual far plane z_f (9.2.5); used unless n is overridden.");
@@ -235,8 +244,9 @@ bool drawPsmPanel(Settings& s, const ShadowDiagnostics& d) {
                             "PSM warp, as Stamminger & Drettakis 4.2 / 6 do by reading back the depth buffer: "
                             "post-perspective space degenerates with a tiny near plane.");
     changed |= checkbox("fall back to SSM when worse", s.psm.guard,
-                        "Compare PSM's largest texel footprint over the visible receivers with the focused "
-                        "uniform map's and use the better map; the stats name the fallback and the ratio.");
+                        "Compare PSM's largest texel footprint over the visible receivers, and its p95 and p99 over "
+                        "the depth pre-pass's 32 x 24 grid, with the focused uniform map's and use the better map; "
+                        "the stats name the fallback and the ratio.");
     if (s.method != ShadowMethod::Psm) ImGui::TextDisabled("(read-outs of the PSM method)");
     readout("move-back", formatNumber(d.psmMoveBack),
             "How far the virtual camera is moved back along -view so every shadow caster is in front of it "

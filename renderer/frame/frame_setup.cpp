@@ -122,6 +122,7 @@ ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, con
     const OverlaySettings& o = settings.overlays;
     p.collectPolygons = o.observerInset || o.lightViewInset;
     p.psmGuard = settings.psm.guard;
+    p.imageCheck = settings.method == ShadowMethod::Psm ? settings.psm.guard : settings.lispsm.imageCheck;
     p.lispsm.useBodyVector = settings.lispsm.useBodyVector;
     p.lispsm.overrideN = settings.lispsm.overrideN;
     p.lispsm.n = settings.lispsm.n;

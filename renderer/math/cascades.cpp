@@ -313,6 +313,7 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
         p.lispsm.virtualFar = 0.0;
         p.lispsm.pseudoNear = i == 0 && range.zNear > view.zNear ? range.zNear : 0.0;
         p.lispsm.standInsJoinFewReceivers = false;  // few per split by construction; the fine grid checks
+        p.imageCheck = false;  // guardedLispsmSetup checks a split's warp on its fine receivers
         switch (params.perSplit) {
         case SplitParameterization::Ssm:
             p.method = ShadowMethod::SsmFocused;

@@ -181,10 +181,34 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
         k = 0.0;
         diag.fallback = "n is not finite: uniform (SSM) map";
     }
+    // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
+    auto warped = [&](double kk) { return fitToPoints(lispsmPreFit(zNearLs, els.x, kk, e.y.lo) * ls.L, bv, true); };
+    M = warped(k);
+    if (!params.overrideN && k > 0.0 && in.imageCheck && in.imageCheck->active()) {
+        // The searched warp over the image (math/image_check.h); where it loses, weaker warps at
+        // fixed shares of u = ln(1 + k d) (the search's own variable), then the uniform map.
+        const double depth = e.z.hi - e.z.lo;
+        const double u = std::log1p(k * depth);
+        const FootprintQuantiles searched = in.imageCheck->quantilesOf(M);
+        diag.imageCheckLoss = in.imageCheck->lossOf(searched);
+        diag.imageCheckSamples = int(in.imageCheck->uniform().samples);
+        if (!in.imageCheck->accepts(searched)) {
+            double kept = 0.0;
+            for (const double share : kImageCheckWarpShares) {
+                const double kk = depth > 0.0 ? std::expm1(share * u) / depth : 0.0;
+                const glm::dmat4 candidate = warped(kk);
+                if (kk > 0.0 && in.imageCheck->accepts(in.imageCheck->quantilesOf(candidate))) {
+                    kept = kk;
+                    M = candidate;
+                    break;
+                }
+            }
+            if (kept == 0.0) M = warped(0.0);
+            k = kept;
+        }
+    }
     diag.warp = k;
     diag.nUsed = k > 0.0 ? 1.0 / k : kInf;
-    // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
-    M = fitToPoints(lispsmPreFit(zNearLs, els.x, k, e.y.lo) * ls.L, bv, true);
     if (k > 0.0) {
         const glm::dvec4 ch = glm::inverse(ls.L) * glm::dvec4(els.x, els.y, zNearLs + 1.0 / k, 1.0);
         if (std::abs(ch.w) > 0.0 && finite(glm::dvec3(ch) / ch.w)) {

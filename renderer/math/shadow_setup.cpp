@@ -170,6 +170,24 @@ std::vector<std::vector<ReceiverSample>> psmGuardSets(const ViewFrustum& view, c
     return sets;
 }
 
+// PSM's guard over the image (math/image_check.h): where PSM loses more than kImageTolerance at
+// p95 or p99 over the fine grid, the uniform map instead.
+void imageCheckedPsm(const ImageCheck& image, const glm::dmat4& uniform, ShadowDiagnostics& diag, glm::dmat4& M,
+                     bool& reverse) {
+    const FootprintQuantiles psm = image.quantilesOf(M);
+    diag.imageCheckLoss = image.lossOf(psm);
+    diag.imageCheckSamples = int(image.uniform().samples);
+    if (image.accepts(psm)) return;
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "PSM: its p95/p99 texel footprint over the image is %.3gx the uniform map's; focused SSM used",
+                  diag.imageCheckLoss);
+    diag.fallback = why;
+    diag.focused = true;
+    M = uniform;
+    reverse = false;
+}
+
 // PSM on the view with its near plane pushed to params.psmNearPlane; where PSM falls back to
 // the focused SSM, that map is the one of the view's own near plane (ShadowParams::psmNearPlane).
 ShadowSetup psmWithPushedNearPlane(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
@@ -272,6 +290,11 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     const bool fineJoined = &measured == &measuredStorage;
     const bool prePassRan = !params.receiverPoints.empty() || !params.fineReceiverPoints.empty();
 
+    // The image check over the pre-pass's fine grid (math/image_check.h), against the uniform map.
+    const bool checkImage = params.imageCheck && !params.fineReceiverPoints.empty() &&
+                            (params.method == ShadowMethod::Lispsm || params.method == ShadowMethod::Psm);
+    const ImageCheck image = checkImage ? ImageCheck(view, light, params.fineReceiverPoints, ssm(bv)) : ImageCheck();
+
     glm::dmat4 M{1.0};
     bool reverse = false;
     switch (params.method) {
@@ -288,7 +311,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         }
         case ShadowMethod::Lispsm: {
             const LispsmInputs in{view,         basis,   light, sceneBounds, ls, bv, receiverBody, receiverVertices,
-                                  measured,     eWorld,  rayLength};
+                                  measured,     eWorld,  rayLength, &image};
             M = lispsmMatrix(in, params.lispsm, params.collectPolygons, diag);
             break;
         }
@@ -297,8 +320,9 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
                                                                      depthNear, depthFar, measured, fineJoined,
                                                                      prePassRan)
                                                       : std::vector<std::vector<ReceiverSample>>{};
-            M = guardedPsm(view, basis, light, bv, uniformMatrix(ls, bv), params.psmGuard ? &receiverSets : nullptr,
-                           diag, reverse);
+            const glm::dmat4 uniform = uniformMatrix(ls, bv);
+            M = guardedPsm(view, basis, light, bv, uniform, params.psmGuard ? &receiverSets : nullptr, diag, reverse);
+            if (params.psmGuard && image.active() && diag.fallback.empty()) imageCheckedPsm(image, uniform, diag, M, reverse);
             break;
         }
     }

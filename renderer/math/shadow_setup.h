@@ -91,6 +91,10 @@ struct ShadowParams {
     // image for the coarse grid (math/lispsm_search.h: receiversInLight). May be empty.
     std::vector<SurfacePoint> fineReceiverPoints;
     static constexpr int kFineReceiverGridX = 32, kFineReceiverGridY = 24;
+    // LiSPSM's warp and PSM are kept only where their p95 and p99 footprint over the fine grid's
+    // receivers are within 1.05x the uniform map's (math/image_check.h). Cascade splits check
+    // their warps on the fine grid their own way (math/cascades.cpp).
+    bool imageCheck = true;
     // Outward planes (n, d) that hold every visible receiver, e.g. the bounds of a cascade split's
     // depth pre-pass samples (math/cascades_sdsm.h): V n S is clipped by them before B is extruded
     // toward the light, so the map covers those receivers and their casters only. Empty: V n S.
@@ -144,6 +148,11 @@ struct ShadowDiagnostics {
     // means the warp cannot beat the uniform map on this view and n = infinity was chosen).
     int warpSamples = 0;
     double estimatedGainOverSsm = 1.0;
+    // The image check (math/image_check.h) of LiSPSM's searched warp or of PSM: the larger of its
+    // p95 and p99 footprint over the pre-pass's fine grid divided by the uniform map's (0: not
+    // checked; > 1.05: a weaker warp or the focused SSM was used), and the points it counted.
+    double imageCheckLoss = 0.0;
+    int imageCheckSamples = 0;
     double z0 = 0.0, z1 = 0.0;  // eye-space z (negative in front) of the points of eq. 8.13
     // PSM (Stamminger & Drettakis 4.2).
     double psmMoveBack = 0.0;   // how far the virtual camera moved back along -forward

@@ -56,7 +56,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraSettings, position, yawDeg, pitchDeg, f
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LightSettings, source, sceneLight, azimuthDeg, elevationDeg, spotPosition,
                                    spotOuterConeDeg, spotRange, color, intensity, ambient, animateSun,
                                    sunDegreesPerSecond)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LispsmSettings, autoVirtualFar, virtualFar, useBodyVector, overrideN, n, imageCheck)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsmSettings, autoNear, guard)
 NLOHMANN_JSON_SERIALIZE_ENUM(CasterFaces, {{CasterFaces::Front, "front"},
                                            {CasterFaces::Back, "back"},

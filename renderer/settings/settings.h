@@ -66,6 +66,9 @@ struct LispsmSettings {
     bool useBodyVector = false;   // thesis 9.2.6
     bool overrideN = false;
     double n = 1.0;
+    // Keep the searched warp only where its p95 and p99 footprint over the pre-pass's fine grid
+    // are within 1.05x the uniform map's (math/image_check.h).
+    bool imageCheck = true;
     bool operator==(const LispsmSettings&) const = default;
 };
 

@@ -1,0 +1,65 @@
+#include "math/image_check.h"
+
+#include "math/texel_footprint.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab::detail {
+
+ImageCheck::ImageCheck(const ViewFrustum& view, const ShadowLight& light, const std::vector<SurfacePoint>& fine,
+                       const glm::dmat4& uniform) {
+    // The receivers the measure pass counts: those facing the light (spot: inside its cone).
+    const std::vector<ReceiverSample> lit = measuredReceiverSamples(light, fine);
+    if (lit.size() < kMinImageSamples) return;
+    const glm::dmat4 viewProj = view.projectionMatrix() * view.viewMatrix();
+    points_.reserve(lit.size());
+    for (const ReceiverSample& s : lit) {
+        Point q;
+        q.p = s.point;
+        // The image at unit height (only ratios between maps of the same view are compared).
+        if (!projectedGradient(viewProj, s.point, glm::dvec2(0.5 * view.aspect, 0.5), q.gx, q.gy)) continue;
+        const glm::dvec3 n = glm::normalize(s.normal);
+        const glm::dvec3 helper = std::abs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        q.t1 = glm::normalize(glm::cross(helper, n));
+        q.t2 = glm::cross(n, q.t1);
+        points_.push_back(q);
+    }
+    uniform_ = quantilesOf(uniform);
+    active_ = uniform_.samples >= kMinImageSamples && uniform_.p95 > 0.0 && std::isfinite(uniform_.p99);
+}
+
+FootprintQuantiles ImageCheck::quantilesOf(const glm::dmat4& m) const {
+    FootprintQuantiles out;
+    std::vector<double> f;
+    f.reserve(points_.size());
+    for (const Point& q : points_) {
+        glm::dvec3 gu, gv;
+        if (!projectedGradient(m, q.p, glm::dvec2(0.5), gu, gv)) continue;  // behind the light
+        const double m1 = footprintFromGradients(gu, gv, q.gx, q.gy, q.t1, q.t2);
+        if (std::isfinite(m1)) f.push_back(m1);
+    }
+    out.samples = f.size();
+    if (f.empty()) return out;
+    // The nearest-rank quantile, as the measure pass reports it.
+    auto quantile = [&](double p) {
+        const std::size_t k = std::min(f.size() - 1, std::size_t(std::ceil(p * double(f.size()))) - 1);
+        std::nth_element(f.begin(), f.begin() + std::ptrdiff_t(k), f.end());
+        return f[k];
+    };
+    out.p99 = quantile(0.99);
+    out.p95 = quantile(0.95);
+    return out;
+}
+
+bool ImageCheck::accepts(const FootprintQuantiles& q) const {
+    // A map that loses points (behind its light) against the uniform map is not accepted.
+    return q.samples >= uniform_.samples && lossOf(q) <= kImageTolerance;
+}
+
+double ImageCheck::lossOf(const FootprintQuantiles& q) const {
+    if (!(uniform_.p95 > 0.0) || !(uniform_.p99 > 0.0)) return 1.0;
+    return std::max(q.p95 / uniform_.p95, q.p99 / uniform_.p99);
+}
+
+}  // namespace shadowlab::detail
