@@ -8,9 +8,13 @@
 namespace shadowlab::detail {
 
 ImageCheck::ImageCheck(const ViewFrustum& view, const ShadowLight& light, const std::vector<SurfacePoint>& fine,
-                       const glm::dmat4& uniform) {
-    // The receivers the measure pass counts: those facing the light (spot: inside its cone).
-    const std::vector<ReceiverSample> lit = measuredReceiverSamples(light, fine);
+                       const glm::dmat4& uniform)
+    : measured_(!fine.empty()) {
+    // The receivers the measure pass counts: those facing the light (spot: inside its cone), and
+    // those it grazes, tilted to face it a little. Over a street's walls under a high sun they are
+    // the image's largest footprints, and without them a warp judged 70x better than SSM over the
+    // rest lost 6.7x SSM's p99 on the image (hard-view sweep, seed 1).
+    const std::vector<ReceiverSample> lit = measuredReceiverSamples(light, fine, GrazedReceivers::Tilted);
     if (lit.size() < kMinImageSamples) return;
     const glm::dmat4 viewProj = view.projectionMatrix() * view.viewMatrix();
     points_.reserve(lit.size());
@@ -52,9 +56,10 @@ FootprintQuantiles ImageCheck::quantilesOf(const glm::dmat4& m) const {
     return out;
 }
 
-bool ImageCheck::accepts(const FootprintQuantiles& q) const {
+bool ImageCheck::accepts(const FootprintQuantiles& q, double tolerance) const {
     // A map that loses points (behind its light) against the uniform map is not accepted.
-    return q.samples >= uniform_.samples && lossOf(q) <= kImageTolerance;
+    if (uniform_.samples < kFewImageSamples) tolerance = std::min(tolerance, kFewImageSamplesTolerance);
+    return q.samples >= uniform_.samples && lossOf(q) <= tolerance;
 }
 
 double ImageCheck::lossOf(const FootprintQuantiles& q) const {

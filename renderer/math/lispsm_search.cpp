@@ -153,7 +153,8 @@ const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, cons
     return out;
 }
 
-std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured) {
+std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured,
+                                                    GrazedReceivers grazed) {
     std::vector<ReceiverSample> out;
     // The measured visible surfaces (spot lights: those in the cone) with their own normals, every
     // one that faces the light: the measure pass counts those pixels, and where the light grazes
@@ -169,7 +170,18 @@ std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, co
         if (!litBy(light, p.point)) continue;
         const glm::dvec3 toLight =
             light.kind == ShadowLightKind::Spot ? glm::normalize(light.position - p.point) : towardSun;
-        if (glm::dot(p.normal, toLight) > kParallelCosine) out.push_back({p.point, p.normal, 1.0});
+        const double cosine = glm::dot(p.normal, toLight);
+        if (cosine > kParallelCosine) {
+            out.push_back({p.point, p.normal, 1.0});
+        } else if (grazed == GrazedReceivers::Tilted && cosine > -kParallelCosine) {
+            // Tilted to the threshold: the footprint's ratio between two maps at a grazed point
+            // tends to a finite limit, which this approximates.
+            const glm::dvec3 tangent = p.normal - cosine * toLight;
+            const double len = glm::length(tangent);
+            if (!(len > 0.0)) continue;
+            const double s = std::sqrt(1.0 - kParallelCosine * kParallelCosine);
+            out.push_back({p.point, tangent / len * s + toLight * kParallelCosine, 1.0});
+        }
     }
     return out;
 }

@@ -68,7 +68,11 @@ const std::vector<SurfacePoint>& receiversInLight(const ShadowLight& light, cons
 
 // The measured receivers (visible surfaces from the depth pre-pass, with their normals; spot
 // lights: the ones inside the cone) that face the light, grazed ones too.
-std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured);
+// Receivers within 0.3 deg of parallel to the light (|N.L| <= 0.005, either side: a normal from
+// depth cannot tell): left out, or kept with their normal tilted to N.L = 0.005 toward the light.
+enum class GrazedReceivers { LeftOut, Tilted };
+std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, const std::vector<SurfacePoint>& measured,
+                                                    GrazedReceivers grazed = GrazedReceivers::LeftOut);
 // Stand-ins where nothing was measured: the visible lit body's vertices between the two depths.
 std::vector<ReceiverSample> standInReceiverSamples(const ViewFrustum& view, const ShadowLight& light,
                                                    const ConvexBody& visibleLit,

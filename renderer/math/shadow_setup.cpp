@@ -170,14 +170,14 @@ std::vector<std::vector<ReceiverSample>> psmGuardSets(const ViewFrustum& view, c
     return sets;
 }
 
-// PSM's guard over the image (math/image_check.h): where PSM loses more than kImageTolerance at
-// p95 or p99 over the fine grid, the uniform map instead.
+// PSM's guard over the image (math/image_check.h): where PSM does not promise kPsmImageTolerance
+// at p95 and p99 over the fine grid, the uniform map instead.
 void imageCheckedPsm(const ImageCheck& image, const glm::dmat4& uniform, ShadowDiagnostics& diag, glm::dmat4& M,
                      bool& reverse) {
     const FootprintQuantiles psm = image.quantilesOf(M);
     diag.imageCheckLoss = image.lossOf(psm);
     diag.imageCheckSamples = int(image.uniform().samples);
-    if (image.accepts(psm)) return;
+    if (image.accepts(psm, kPsmImageTolerance)) return;
     char why[200];
     std::snprintf(why, sizeof why,
                   "PSM: its p95/p99 texel footprint over the image is %.3gx the uniform map's; focused SSM used",
