@@ -1,0 +1,108 @@
+// The image check (math/image_check.h): quantiles of the footprint over the pre-pass's fine grid,
+// compared with the uniform map's, and the grazed receivers it counts.
+#include "math/image_check.h"
+#include "math/lispsm.h"
+#include "math/texel_footprint.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowlab::detail {
+namespace {
+
+ViewFrustum groundView() {
+    ViewFrustum v;
+    v.eye = {0.0, 5.0, 0.0};
+    v.forward = {0.0, -0.35, -1.0};
+    v.fovY = glm::radians(60.0);
+    v.aspect = 16.0 / 9.0;
+    v.zNear = 0.1;
+    v.zFar = 200.0;
+    return v;
+}
+
+// The ground y = 0 at the fine grid's pixel centres, as the pre-pass samples it.
+std::vector<SurfacePoint> fineGridOnGround(const ViewFrustum& v) {
+    const glm::dvec3 f = glm::normalize(v.forward), r = glm::normalize(glm::cross(f, v.up)), u = glm::cross(r, f);
+    const double ty = std::tan(0.5 * v.fovY), tx = ty * v.aspect;
+    std::vector<SurfacePoint> out;
+    for (int j = 0; j < ShadowParams::kFineReceiverGridY; ++j)
+        for (int i = 0; i < ShadowParams::kFineReceiverGridX; ++i) {
+            const double x = -1.0 + (2.0 * i + 1.0) / ShadowParams::kFineReceiverGridX;
+            const double y = -1.0 + (2.0 * j + 1.0) / ShadowParams::kFineReceiverGridY;
+            const glm::dvec3 d = f + r * (x * tx) + u * (y * ty);
+            if (!(d.y < 0.0)) continue;
+            const double t = -v.eye.y / d.y;
+            if (t > v.zFar) continue;
+            out.push_back({v.eye + d * t, {0.0, 1.0, 0.0}});
+        }
+    return out;
+}
+
+// An orthographic map of the ground around the view, looking along the light.
+glm::dmat4 orthoMap(const ShadowLight& light, double halfSize) {
+    const glm::dvec3 l = glm::normalize(light.direction);
+    const glm::dmat4 look = glm::lookAt(-l * 100.0, glm::dvec3(0.0), std::abs(l.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0));
+    return glm::ortho(-halfSize, halfSize, -halfSize, halfSize, 1.0, 400.0) * look;
+}
+
+TEST(ImageCheck, ComparesQuantilesWithTheUniformMap) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = {0.3, -0.7, -0.4};
+    const glm::dmat4 uniform = orthoMap(sun, 120.0);
+    const ImageCheck check(v, sun, fineGridOnGround(v), uniform);
+    ASSERT_TRUE(check.active());
+    EXPECT_GT(check.uniform().samples, 300u);
+    EXPECT_LE(check.uniform().p95, check.uniform().p99);
+    const FootprintQuantiles same = check.quantilesOf(uniform);
+    EXPECT_DOUBLE_EQ(same.p99, check.uniform().p99);
+    EXPECT_TRUE(check.accepts(same));
+    // A map of half the extent has texels of half the size: half the footprint everywhere.
+    const FootprintQuantiles finer = check.quantilesOf(orthoMap(sun, 60.0));
+    EXPECT_NEAR(check.lossOf(finer), 0.5, 1e-9);
+    EXPECT_TRUE(check.accepts(finer, kPsmImageTolerance));
+    // Twice the extent: twice the footprint, and 1.06x is already too much.
+    EXPECT_NEAR(check.lossOf(check.quantilesOf(orthoMap(sun, 240.0))), 2.0, 1e-9);
+    EXPECT_FALSE(check.accepts(check.quantilesOf(orthoMap(sun, 240.0))));
+    EXPECT_FALSE(check.accepts(check.quantilesOf(orthoMap(sun, 120.0 * 1.06))));
+    EXPECT_TRUE(check.accepts(check.quantilesOf(orthoMap(sun, 120.0 * 1.04))));
+    EXPECT_FALSE(check.accepts(check.quantilesOf(orthoMap(sun, 120.0 * 1.04)), kPsmImageTolerance));
+}
+
+// A sun grazing the ground: left out of the warp search, but counted by the check, tilted.
+TEST(ImageCheck, CountsGrazedReceivers) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = glm::normalize(glm::dvec3(1.0, -0.002, 0.3));
+    const std::vector<SurfacePoint> fine = fineGridOnGround(v);
+    EXPECT_TRUE(measuredReceiverSamples(sun, fine).empty());
+    const std::vector<ReceiverSample> tilted = measuredReceiverSamples(sun, fine, GrazedReceivers::Tilted);
+    ASSERT_EQ(tilted.size(), fine.size());
+    for (const ReceiverSample& s : tilted) {
+        EXPECT_NEAR(glm::dot(s.normal, -sun.direction), 0.005, 1e-12);
+        EXPECT_NEAR(glm::length(s.normal), 1.0, 1e-12);
+    }
+    const ImageCheck check(v, sun, fine, orthoMap(sun, 120.0));
+    EXPECT_TRUE(check.active());
+    EXPECT_TRUE(std::isfinite(check.uniform().p99));
+}
+
+// Too few receivers in the light: no check, and the caller is told so.
+TEST(ImageCheck, FewPointsInTheLightLeaveItInactive) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = {0.3, -0.7, -0.4};
+    std::vector<SurfacePoint> fine = fineGridOnGround(v);
+    fine.resize(kMinImageSamples - 1);
+    const ImageCheck few(v, sun, fine, orthoMap(sun, 120.0));
+    EXPECT_FALSE(few.active());
+    EXPECT_TRUE(few.tooFewSamples());
+    const ImageCheck none(v, sun, {}, orthoMap(sun, 120.0));
+    EXPECT_FALSE(none.active());
+    EXPECT_FALSE(none.tooFewSamples());
+}
+
+}  // namespace
+}  // namespace shadowlab::detail
