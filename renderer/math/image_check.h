@@ -59,8 +59,9 @@ public:
 
 private:
     struct Point {
-        glm::dvec3 p, gx, gy, t1, t2;  // the camera's gradients and the receiver's tangents, once
-        double share = 1.0;            // of a pixel: 0.5 for a grazed receiver
+        glm::dvec3 p, t1, t2;              // the receiver and its tangents
+        double s11, s12, s21, s22;         // d(pixel)/d(tangent)
+        double share = 1.0;                // of a pixel: 0.5 for a grazed receiver
     };
     std::vector<Point> points_;
     FootprintQuantiles uniform_;

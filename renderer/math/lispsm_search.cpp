@@ -79,7 +79,7 @@ std::vector<Sample> makeSamples(const WarpSearchInput& in, std::size_t& measured
     const glm::dvec3 r2{in.ls.L[0][2], in.ls.L[1][2], in.ls.L[2][2]};
     const glm::dvec3 r3{in.ls.L[0][3], in.ls.L[1][3], in.ls.L[2][3]};
     out.reserve(receivers.size());
-    for (const auto& [p, normal, weight] : receivers) {
+    for (const auto& [p, normal, weight, grazed] : receivers) {
         glm::dvec3 gx, gy;
         if (!projectedGradient(viewProj, p, glm::dvec2(0.5 * v.aspect, 0.5), gx, gy)) continue;
         // Light-space x and z' gradients (L is projective for spot lights).
@@ -180,7 +180,7 @@ std::vector<ReceiverSample> measuredReceiverSamples(const ShadowLight& light, co
             const double len = glm::length(tangent);
             if (!(len > 0.0)) continue;
             const double s = std::sqrt(1.0 - kParallelCosine * kParallelCosine);
-            out.push_back({p.point, tangent / len * s + toLight * kParallelCosine, 1.0});
+            out.push_back({p.point, tangent / len * s + toLight * kParallelCosine, 1.0, true});
         }
     }
     return out;

@@ -41,6 +41,7 @@ struct WarpSearchResult {
 struct ReceiverSample {
     glm::dvec3 point{0.0}, normal{0.0, 1.0, 0.0};
     double weight = 1.0;
+    bool grazed = false;  // within 0.3 deg of parallel to the light, its normal tilted (GrazedReceivers)
 };
 // Fewer measured receivers than this in the light and a spot light's finer grid is consulted
 // (receiversInLight), and PSM's guard also checks the stand-ins (shadow_setup.cpp).
