@@ -44,11 +44,14 @@ inline ShadowLight sunFrom(glm::dvec3 travel) {
     return l;
 }
 
+// PSM without its guard: these fixtures have no measured receivers, without which the guard
+// always keeps the focused SSM; the tests check the parameterization itself.
 inline ShadowSetup setupFor(const ViewFrustum& v, const ShadowLight& l, const Aabb& s, ShadowMethod m,
                      LispsmParams lp = {}) {
     ShadowParams p;
     p.method = m;
     p.lispsm = lp;
+    p.psmGuard = false;
     return computeShadowSetup(v, l, s, p);
 }
 
