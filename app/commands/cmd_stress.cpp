@@ -22,6 +22,7 @@ struct StressCommandOptions {
     int samples = 8;
     long long sweepSun = 4000, sweepSpot = 2000;
     bool sweepWithoutReceivers = false;
+    bool sweepWithoutImageCheck = false;
     bool sweepHardViews = false;
 };
 
@@ -50,6 +51,7 @@ void runStressCommand(const StressCommandOptions& o) {
     sweepOptions.spotViews = std::uint64_t(o.sweepSpot);
     sweepOptions.measuredReceivers = !o.sweepWithoutReceivers;
     sweepOptions.hardViewClasses = o.sweepHardViews;
+    sweepOptions.imageCheck = !o.sweepWithoutImageCheck;
     const SweepReport sweep = runMethodSweep(sweepOptions);
     std::cout << "\nmethod sweep\n" << sweep.text();
     if (!report.passed() || !sweep.passed()) {
@@ -71,6 +73,9 @@ void addStressCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--sweep-without-receivers", options->sweepWithoutReceivers,
                   "Method sweep: no depth pre-pass receiver points (the warps see only the visible depth range)");
+    cmd->add_flag("--sweep-without-image-check", options->sweepWithoutImageCheck,
+                  "Method sweep: the warps without the check over the pre-pass's fine grid (lispsm.imageCheck off, "
+                  "PSM's guard without it), for comparison");
     cmd->add_flag("--sweep-hard-views", options->sweepHardViews,
                   "Method sweep: views from the hard classes (eye under 1.5 m over uneven ground, the ground at the "
                   "image's bottom edge, tall vertical receivers, spots aiming near the horizon)");

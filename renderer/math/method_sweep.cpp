@@ -256,7 +256,8 @@ SweepViewFigure figure(const SweepCase& c, const GroundSamples& g, ShadowMethod 
     SweepViewFigure out;
     out.p99 = std::numeric_limits<double>::quiet_NaN();
     if (g.points.empty()) return out;
-    const ShadowParams params = paramsFor(method, g, c.view, o.measuredReceivers);
+    ShadowParams params = paramsFor(method, g, c.view, o.measuredReceivers);
+    params.imageCheck = o.imageCheck;
     const ShadowSetup setup = computeShadowSetup(c.view, c.light, c.scene, params);
     out.fallback = setup.diagnostics.fallback;
     if (!setup.valid) return out;

@@ -32,6 +32,8 @@ struct SweepOptions {
     // 1.5 m over uneven ground, the ground only at the image's bottom edge, tall vertical receivers,
     // spots aiming near the horizon.
     bool hardViewClasses = false;
+    // The warps' check over the pre-pass's fine grid (ShadowParams::imageCheck); off: for comparison.
+    bool imageCheck = true;
 };
 
 enum class SweepViewClass {
