@@ -1,5 +1,6 @@
 // Cascaded shadow maps: split positions, per-split setups, stable SSM (see cascades.h).
 #include "math/cascades.h"
+#include "math/cascades_sdsm_balance.h"
 
 #include "math/lispsm_search.h"
 #include "math/shadow_internal.h"
@@ -263,6 +264,20 @@ double texelWorldSizeAt(const glm::dmat4& m, const glm::dvec3& p, int resolution
     return size;
 }
 
+namespace {
+
+// A directional light's splits balance the predicted footprint of their orthographic fits
+// (cascades_sdsm_balance.h); a spot's perspective map has no such fit, its splits stay
+// logarithmic over the samples.
+std::vector<double> sdsmPlacementDepths(const VisibleSamples& samples, const ViewFrustum& view, const glm::dvec3& forward,
+                                        const ShadowLight& light, int splits) {
+    if (light.kind == ShadowLightKind::Spot)
+        return sdsmSplitDepths(samples, view.eye, forward, view.zNear, view.zFar, splits);
+    return balancedSplitDepths(samples, view.eye, forward, light.direction, view.zNear, view.zFar, splits);
+}
+
+}  // namespace
+
 CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
                                  const CascadeParams& params) {
     CascadeSetup out;
@@ -279,8 +294,7 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
             out.placementNote = "sdsm: stable splits keep their view-independent bounds, lambda used";
         else if (params.samples.empty())
             out.placementNote = "sdsm: no pre-pass samples of this view, lambda used";
-        else if ((fromSamples = sdsmSplitDepths(params.samples, view.eye, forward, view.zNear, view.zFar,
-                                                params.splits)).empty())
+        else if ((fromSamples = sdsmPlacementDepths(params.samples, view, forward, light, params.splits)).empty())
             out.placementNote = "sdsm: the samples span no depth range, lambda used";
         if (out.placementNote.empty()) {
             out.placement = SplitPlacement::Sdsm;
