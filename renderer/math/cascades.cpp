@@ -321,6 +321,9 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
             p.receiverBounds =
                 sampleBoundPlanes(own, light.direction, forward, kSampleBoundPadPixels * params.samples.pixelAngle * farthest);
             split.tightBounds = !p.receiverBounds.empty();
+            if (light.kind != ShadowLightKind::Spot)
+                split.predictedFootprintPerK =
+                    predictedSplitFootprint(own, view.eye, forward, light.direction, zLow, zHigh);
         }
         // LiSPSM's n from the split's own depths (thesis 9.2.5 per split): the first split's
         // near plane is the view's, its receivers start at the nearest visible depth.
