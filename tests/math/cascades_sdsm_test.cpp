@@ -123,10 +123,10 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
             ASSERT_TRUE(tight.error.empty()) << tight.error;
             EXPECT_EQ(tight.placement, SplitPlacement::Sdsm);
             EXPECT_TRUE(tight.placementNote.empty());
-            // The practical scheme with the same split depths (lambda 1 over the samples' range).
+            // The practical scheme's slices V_i n S at the same split depths (placed by hand over
+            // the samples' range).
             CascadeParams loose = sdsmParams(per, samples);
             loose.placement = SplitPlacement::Lambda;
-            loose.lambda = 1.0;
             double nearest = 1e300, farthest = 0.0;
             for (const glm::dvec3& p : samples.points) {
                 nearest = std::min(nearest, eyeDepth(view, p));
@@ -134,6 +134,8 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
             }
             loose.visibleNear = nearest;
             loose.visibleFar = farthest;
+            for (std::size_t i = 0; i + 1 < tight.splits.size(); ++i)
+                loose.manualSplits.push_back((tight.splits[i].zFar - nearest) / (farthest - nearest));
             const CascadeSetup wide = computeCascadeSetup(view, light, terrain(), loose);
             ASSERT_EQ(tight.splits.size(), wide.splits.size());
             int shrunk = 0;
@@ -184,8 +186,8 @@ TEST(SdsmCascades, FallsBackToLambdaAndSaysWhy) {
 }
 
 TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
-    // Samples only at 10-12 m and 60 m: the log splits put none into the middle ones, which then
-    // keep V_i n S rather than an empty map.
+    // Samples only at 10-12 m and 60 m, splits placed by hand at 15 / 25 / 35 m: the middle ones
+    // hold none and keep V_i n S rather than an empty map.
     const ViewFrustum view = sdsmStreetView();
     const glm::dvec3 f = glm::normalize(view.forward);
     VisibleSamples s;
@@ -195,8 +197,9 @@ TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
         p.y = 1.0;  // above the ground, inside S
         s.points.push_back(p);
     }
-    const CascadeSetup cs =
-        computeCascadeSetup(view, sunFrom({0.3, -1, 0.2}), terrain(), sdsmParams(SplitParameterization::Ssm, s));
+    CascadeParams params = sdsmParams(SplitParameterization::Ssm, s);
+    params.manualSplits = {0.1, 0.3, 0.5};
+    const CascadeSetup cs = computeCascadeSetup(view, sunFrom({0.3, -1, 0.2}), terrain(), params);
     ASSERT_EQ(cs.placement, SplitPlacement::Sdsm);
     int empty = 0;
     for (const CascadeSplit& split : cs.splits) {
