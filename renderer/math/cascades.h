@@ -113,9 +113,9 @@ struct CascadeSplit {
     // (a split without samples keeps V_i n S).
     int samples = 0;
     bool tightBounds = false;
-    // Sdsm, directional light: the split's predicted largest footprint of an unwarped fit, in units
-    // of K = (image height / map size) / (2 tan(fovY / 2)): E / z_near of its samples
-    // (math/cascades_sdsm_balance.h); 0 otherwise.
+    // Sdsm with balanced split depths (a directional light, no manualSplits): the split's
+    // predicted largest footprint of an unwarped fit, in units of K = (image height / map size) /
+    // (2 tan(fovY / 2)): E / z_near of its samples (math/cascades_sdsm_balance.h); 0 otherwise.
     double predictedFootprintPerK = 0.0;
 };
 

@@ -103,18 +103,22 @@ double predictedSplitFootprint(const std::vector<glm::dvec3>& points, const glm:
     return split.footprint();
 }
 
-std::vector<double> balancedSplitDepths(const VisibleSamples& samples, const glm::dvec3& eye, const glm::dvec3& forward,
-                                        const glm::dvec3& lightDirection, double zNear, double zFar, int splits) {
+BalancedSplits balancedSplits(const VisibleSamples& samples, const glm::dvec3& eye, const glm::dvec3& forward,
+                              const glm::dvec3& lightDirection, double zNear, double zFar, int splits) {
     // The samples' depth range as the logarithmic partition sees it (one split: {lo, hi}).
     const std::vector<double> range = sdsmSplitDepths(samples, eye, forward, zNear, zFar, 1);
     glm::dvec3 x, y;
     if (range.size() != 2 || !lightAxes(lightDirection, forward, x, y)) return {};
     const double lo = range[0], hi = range[1], logSpan = std::log(hi / lo);
     std::vector<DepthBin> bins(kBalanceBins);
+    const float binsPerLog = float(kBalanceBins / logSpan);
     for (const glm::dvec3& p : samples.points) {
-        const double z = std::clamp(glm::dot(p - eye, forward), zNear, zFar);
-        if (!std::isfinite(z) || !detail::finite(p) || glm::dot(p - eye, forward) <= 0.0) continue;
-        const int k = std::clamp(int(std::floor(std::log(z / lo) / logSpan * kBalanceBins)), 0, kBalanceBins - 1);
+        const double depth = glm::dot(p - eye, forward);
+        if (!(depth > 0.0) || !detail::finite(p)) continue;
+        const double z = std::clamp(depth, zNear, zFar);
+        // A float logarithm (cheaper per sample): a sample a rounding from a bin edge may fall into
+        // the neighbour bin, which moves a split by at most one bin.
+        const int k = std::clamp(int(std::log(float(z / lo)) * binsPerLog), 0, kBalanceBins - 1);
         DepthBin& bin = bins[std::size_t(k)];
         bin.zMin = std::min(bin.zMin, std::max(z, lo));
         bin.x.add(glm::dot(p, x)), bin.y.add(glm::dot(p, y));
@@ -129,10 +133,14 @@ std::vector<double> balancedSplitDepths(const VisibleSamples& samples, const glm
     std::vector<int> starts = packSplits(bins, feasible);
     while (int(starts.size()) - 1 < splits)
         if (!cutWorstSplit(bins, starts)) return {};
-    std::vector<double> z{lo};
-    for (std::size_t i = 1; i + 1 < starts.size(); ++i) z.push_back(lo * std::exp(logSpan * starts[i] / kBalanceBins));
-    z.push_back(hi);
-    return z;
+    BalancedSplits out;
+    out.depths.push_back(lo);
+    for (std::size_t i = 1; i + 1 < starts.size(); ++i)
+        out.depths.push_back(lo * std::exp(logSpan * starts[i] / kBalanceBins));
+    out.depths.push_back(hi);
+    for (std::size_t i = 0; i + 1 < starts.size(); ++i)
+        out.predictedPerK.push_back(merged(bins, starts[i], starts[i + 1]).footprint());
+    return out;
 }
 
 }  // namespace shadowlab

@@ -25,11 +25,17 @@ double predictedSplitFootprint(const std::vector<glm::dvec3>& points, const glm:
 
 // Split depths z_0 < ... < z_splits over the samples' eye-depth range (clamped to [zNear, zFar]),
 // placed at the edges of kBalanceBins logarithmic depth bins so that the largest
-// predictedSplitFootprint over the splits is the least the bins allow. Empty when
-// sdsmSplitDepths would be (no sample in front of the eye, a range too thin to split, bad
-// arguments) or when the light direction is degenerate; then the caller keeps its fallback.
-std::vector<double> balancedSplitDepths(const VisibleSamples& samples, const glm::dvec3& eye, const glm::dvec3& forward,
-                                        const glm::dvec3& lightDirection, double zNear, double zFar, int splits);
+// predictedSplitFootprint over the splits is the least the bins allow, with each split's
+// prediction from its bins. Empty when sdsmSplitDepths would be (no sample in front of the eye, a
+// range too thin to split, bad arguments) or when the light direction is degenerate; then the
+// caller keeps its fallback.
+struct BalancedSplits {
+    std::vector<double> depths;         // splits + 1 entries, or none
+    std::vector<double> predictedPerK;  // per split
+    bool empty() const { return depths.empty(); }
+};
+BalancedSplits balancedSplits(const VisibleSamples& samples, const glm::dvec3& eye, const glm::dvec3& forward,
+                              const glm::dvec3& lightDirection, double zNear, double zFar, int splits);
 
 constexpr int kBalanceBins = 256;
 

@@ -296,7 +296,8 @@ TEST(SdsmBalance, SplitsSpanningTheWholeImageKeepTheLogarithmicRatios) {
     const VisibleSamples samples = openGround(view, 8000);
     const glm::dvec3 f = glm::normalize(view.forward);
     const std::vector<double> log = sdsmSplitDepths(samples, view.eye, f, view.zNear, view.zFar, 4);
-    const std::vector<double> z = balancedSplitDepths(samples, view.eye, f, {0, -1, 0}, view.zNear, view.zFar, 4);
+    const BalancedSplits balanced = balancedSplits(samples, view.eye, f, {0, -1, 0}, view.zNear, view.zFar, 4);
+    const std::vector<double>& z = balanced.depths;
     ASSERT_EQ(log.size(), 5u);
     ASSERT_EQ(z.size(), 5u);
     EXPECT_DOUBLE_EQ(z.front(), log.front());
@@ -313,32 +314,38 @@ TEST(SdsmBalance, SplitsSpanningTheWholeImageKeepTheLogarithmicRatios) {
         return worst;
     };
     EXPECT_LE(largest(z), largest(log) * bin);
+    // Each split's prediction, from its bins, is its samples' own.
+    ASSERT_EQ(balanced.predictedPerK.size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        const double own = predictedSplitFootprint(samples.points, view.eye, f, {0, -1, 0}, z[i], i == 3 ? 1e300 : z[i + 1]);
+        EXPECT_NEAR(balanced.predictedPerK[std::size_t(i)], own, 0.01 * own) << i;
+    }
     for (int i = 0; i < 4; ++i) EXPECT_NEAR((z[i + 1] / z[i]) / (log[i + 1] / log[i]), 1.0, 0.15) << i;
 }
 
 TEST(SdsmBalance, DegenerateInputGivesNoSplitsOrStillIncreasingOnes) {
     const ViewFrustum view = sdsmStreetView();
     const glm::dvec3 f = glm::normalize(view.forward), down{0, -1, 0};
-    EXPECT_TRUE(balancedSplitDepths({}, view.eye, f, down, view.zNear, view.zFar, 4).empty());
+    EXPECT_TRUE(balancedSplits({}, view.eye, f, down, view.zNear, view.zFar, 4).empty());
     VisibleSamples one;
     one.points = {view.eye + f * 10.0, view.eye + f * 10.0};
-    EXPECT_TRUE(balancedSplitDepths(one, view.eye, f, down, view.zNear, view.zFar, 4).empty());
+    EXPECT_TRUE(balancedSplits(one, view.eye, f, down, view.zNear, view.zFar, 4).empty());
     const VisibleSamples street = narrowingStreet(view, 500);
-    EXPECT_TRUE(balancedSplitDepths(street, view.eye, f, glm::dvec3(0.0), view.zNear, view.zFar, 4).empty());
+    EXPECT_TRUE(balancedSplits(street, view.eye, f, glm::dvec3(0.0), view.zNear, view.zFar, 4).empty());
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_TRUE(balancedSplitDepths(street, view.eye, f, glm::dvec3(nan), view.zNear, view.zFar, 4).empty());
+    EXPECT_TRUE(balancedSplits(street, view.eye, f, glm::dvec3(nan), view.zNear, view.zFar, 4).empty());
     EXPECT_EQ(predictedSplitFootprint(street.points, view.eye, f, glm::dvec3(0.0), 0.0, 1e300), 0.0);
     // Two depths for four splits, a NaN point and one behind the eye: four splits all the same,
     // strictly increasing from the nearest to the farthest sample.
     VisibleSamples two;
     two.points = {view.eye + f * 10.0 + glm::dvec3(3, 0, 0), view.eye + f * 60.0, glm::dvec3(nan), view.eye - f * 5.0};
-    const std::vector<double> z = balancedSplitDepths(two, view.eye, f, down, view.zNear, view.zFar, 4);
+    const std::vector<double> z = balancedSplits(two, view.eye, f, down, view.zNear, view.zFar, 4).depths;
     ASSERT_EQ(z.size(), 5u);
     EXPECT_NEAR(z.front(), 10.0, 1e-9);
     EXPECT_NEAR(z.back(), 60.0, 1e-9);
     for (int i = 0; i < 4; ++i) EXPECT_LT(z[i], z[i + 1]);
     // Looking straight along the light: any axis across it serves.
-    EXPECT_EQ(balancedSplitDepths(street, view.eye, f, f, view.zNear, view.zFar, 4).size(), 5u);
+    EXPECT_EQ(balancedSplits(street, view.eye, f, f, view.zNear, view.zFar, 4).depths.size(), 5u);
 }
 
 TEST(SdsmBalance, ASpotKeepsTheLogarithmicPartition) {
