@@ -71,8 +71,9 @@ bool drawCascadePanel(Settings& s) {
         changed = true;
     }
     tip("lambda: split depths by the practical scheme above, each split bounded by its slice of the view "
-        "frustum. SDSM (Lauritzen et al. 2011): split depths logarithmic between the nearest and farthest "
-        "surface the depth pre-pass sees, and each split's map fitted to the visible samples of its range only "
+        "frustum. SDSM (Lauritzen et al. 2011): split depths between the nearest and farthest surface the "
+        "depth pre-pass sees, placed so that no split's map is much coarser for its nearest pixels than the "
+        "others' (a spot's logarithmic), and each split's map fitted to the visible samples of its range only "
         "(csm.placement). Without a pre-pass of this very view (the first frame, a quick turn with the "
         "asynchronous read-back) and for stable splits, lambda is used and the fallback line says so.");
     static const SplitParameterization kPer[] = {SplitParameterization::Ssm, SplitParameterization::StableSsm,

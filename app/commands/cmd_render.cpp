@@ -7,6 +7,7 @@
 #include "resources/render_target.h"
 #include "accuracy.h"
 #include "commands/bench_spec.h"
+#include "math/error_theory.h"
 #include "measure/cascade_footprint.h"
 #include "renderer.h"
 #include "scenes/animation.h"
@@ -73,6 +74,10 @@ void printSplits(const MeasureFrame& frame, const CascadeSetup& cascades, const 
                         split.warpFromFineGrid ? "fine" : "coarse", split.coarseWarpLoss);
         if (cascades.placement == SplitPlacement::Sdsm)
             std::printf("  %s over %d pre-pass samples", split.tightBounds ? "bounded" : "not bounded", split.samples);
+        if (split.predictedFootprintPerK > 0.0 && frame.shadowMapSize > 0)
+            std::printf("  predicted unwarped %.3f", split.predictedFootprintPerK *
+                        footprintScale(CanonicalView{frame.zNear, frame.zFar, double(frame.height),
+                                                     double(frame.shadowMapSize), frame.fovYRad}));
         std::printf("\n");
     }
 }

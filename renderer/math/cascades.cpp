@@ -1,5 +1,6 @@
 // Cascaded shadow maps: split positions, per-split setups, stable SSM (see cascades.h).
 #include "math/cascades.h"
+#include "math/cascades_sdsm_balance.h"
 
 #include "math/lispsm_search.h"
 #include "math/shadow_internal.h"
@@ -263,6 +264,20 @@ double texelWorldSizeAt(const glm::dmat4& m, const glm::dvec3& p, int resolution
     return size;
 }
 
+namespace {
+
+// A directional light's splits balance the predicted footprint of their orthographic fits
+// (cascades_sdsm_balance.h); a spot's perspective map has no such fit, its splits stay
+// logarithmic over the samples.
+BalancedSplits sdsmPlacement(const VisibleSamples& samples, const ViewFrustum& view, const glm::dvec3& forward,
+                             const ShadowLight& light, int splits) {
+    if (light.kind == ShadowLightKind::Spot)
+        return {sdsmSplitDepths(samples, view.eye, forward, view.zNear, view.zFar, splits), {}};
+    return balancedSplits(samples, view.eye, forward, light.direction, view.zNear, view.zFar, splits);
+}
+
+}  // namespace
+
 CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& light, const Aabb& sceneBounds,
                                  const CascadeParams& params) {
     CascadeSetup out;
@@ -273,20 +288,24 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
     const glm::dvec3 forward = glm::length(view.forward) > 0.0 ? glm::normalize(view.forward) : view.forward;
     CascadeDepthRange range = cascadeDepthRange(view, params);
     std::vector<double> z = cascadeSplitDepths(params, range.zNear, range.zFar);
+    std::vector<double> predicted;  // per split, where the split depths were balanced on it
     if (params.placement == SplitPlacement::Sdsm) {
-        std::vector<double> fromSamples;
+        BalancedSplits fromSamples;
         if (params.perSplit == SplitParameterization::StableSsm)
             out.placementNote = "sdsm: stable splits keep their view-independent bounds, lambda used";
         else if (params.samples.empty())
             out.placementNote = "sdsm: no pre-pass samples of this view, lambda used";
-        else if ((fromSamples = sdsmSplitDepths(params.samples, view.eye, forward, view.zNear, view.zFar,
-                                                params.splits)).empty())
+        else if ((fromSamples = sdsmPlacement(params.samples, view, forward, light, params.splits)).empty())
             out.placementNote = "sdsm: the samples span no depth range, lambda used";
         if (out.placementNote.empty()) {
             out.placement = SplitPlacement::Sdsm;
-            range = {fromSamples.front(), fromSamples.back()};
-            if (params.manualSplits.empty()) z = std::move(fromSamples);
-            else z = cascadeSplitDepths(params, range.zNear, range.zFar);
+            range = {fromSamples.depths.front(), fromSamples.depths.back()};
+            if (params.manualSplits.empty()) {
+                z = std::move(fromSamples.depths);
+                predicted = std::move(fromSamples.predictedPerK);
+            } else {
+                z = cascadeSplitDepths(params, range.zNear, range.zFar);
+            }
         }
     }
     const bool tight = out.placement == SplitPlacement::Sdsm;
@@ -307,6 +326,7 @@ CascadeSetup computeCascadeSetup(const ViewFrustum& view, const ShadowLight& lig
             p.receiverBounds =
                 sampleBoundPlanes(own, light.direction, forward, kSampleBoundPadPixels * params.samples.pixelAngle * farthest);
             split.tightBounds = !p.receiverBounds.empty();
+            if (std::size_t(i) < predicted.size()) split.predictedFootprintPerK = predicted[std::size_t(i)];
         }
         // LiSPSM's n from the split's own depths (thesis 9.2.5 per split): the first split's
         // near plane is the view's, its receivers start at the nearest visible depth.

@@ -50,8 +50,9 @@ struct CascadeParams {
     // end snapped outwards to steps of kStableDepthStep (cascadeDepthRange), so a small camera
     // move does not move them.
     double visibleNear = 0.0, visibleFar = 0.0;
-    // Sdsm (math/cascades_sdsm.h): split depths logarithmic over the samples' depth range (unless
-    // manualSplits are given) and each split bounded by its own samples. Without samples (no
+    // Sdsm (math/cascades_sdsm.h): split depths over the samples' depth range balanced on the
+    // splits' predicted footprint (math/cascades_sdsm_balance.h; a spot's logarithmic), unless
+    // manualSplits are given, and each split bounded by its own samples. Without samples (no
     // pre-pass, or one of another view) and for stable splits (whose bound must not follow the
     // view) the practical scheme is used, and CascadeSetup::placementNote says so.
     SplitPlacement placement = SplitPlacement::Lambda;
@@ -112,6 +113,10 @@ struct CascadeSplit {
     // (a split without samples keeps V_i n S).
     int samples = 0;
     bool tightBounds = false;
+    // Sdsm with balanced split depths (a directional light, no manualSplits): the split's
+    // predicted largest footprint of an unwarped fit, in units of K = (image height / map size) /
+    // (2 tan(fovY / 2)): E / z_near of its samples (math/cascades_sdsm_balance.h); 0 otherwise.
+    double predictedFootprintPerK = 0.0;
 };
 
 struct CascadeSetup {

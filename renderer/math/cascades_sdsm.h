@@ -3,7 +3,9 @@
 // I3D 2011), GL-free: cascades placed and fitted from the visible samples the depth pre-pass reads
 // back, instead of from the view frustum alone.
 //  - Split depths (their section 4.1, logarithmic partitioning over the tight depth range): the
-//    splits are spread logarithmically between the nearest and the farthest visible sample.
+//    splits are spread logarithmically between the nearest and the farthest visible sample
+//    (sdsmSplitDepths, a spot light's); a directional light's are balanced on the splits'
+//    predicted footprint instead (math/cascades_sdsm_balance.h).
 //  - Tight bounds (their section 4.2): each split's receivers are bounded by the samples of its
 //    depth range rather than by V_i n S. The paper takes the samples' box in light space; here the
 //    bound is a k-DOP in world space (slabs along the light direction, eight directions across it

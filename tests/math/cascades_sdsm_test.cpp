@@ -1,7 +1,12 @@
 // Sample distribution cascades (math/cascades_sdsm.h): split depths from the samples, the k-DOP
 // around a split's samples, and the cascade setup built on them (tight maps that still hold every
 // sample and its casters), with the fallbacks to the practical scheme.
+// Split depths balanced on the predicted footprint (math/cascades_sdsm_balance.h): a street whose
+// near part fills the image and whose far part is narrow gets split depths under which the maps'
+// largest unwarped footprint falls against the logarithmic partition; a view whose splits all span
+// the image keeps that partition.
 #include "math/cascades.h"
+#include "math/cascades_sdsm_balance.h"
 
 #include "math/random.h"
 #include "shadow_setup_fixtures.h"
@@ -26,20 +31,29 @@ ViewFrustum sdsmStreetView() {
 
 using setup_test::eyeDepth;
 
-// A narrow street seen down its length: ground points 6 m either side of the axis, 4-80 m ahead,
-// kept where the camera sees them. The view frustum is 140 m wide at 80 m, so V_i n S holds far
-// more than the visible receivers.
-VisibleSamples streetSamples(const ViewFrustum& view, int count, std::uint64_t seed = 3) {
+bool inView(const ViewFrustum& view, const glm::dvec3& p) {
+    const glm::dvec4 c = view.projectionMatrix() * view.viewMatrix() * glm::dvec4(p, 1.0);
+    return c.w > 0 && std::abs(c.x) < c.w && std::abs(c.y) < c.w && std::abs(c.z) < c.w;
+}
+
+// `count` points drawn by `draw(rng)`, kept where the camera sees them, as a 180-row pre-pass.
+template <class Draw>
+VisibleSamples visibleSamples(const ViewFrustum& view, int count, std::uint64_t seed, Draw draw) {
     Rng rng(seed);
-    const glm::dmat4 vp = view.projectionMatrix() * view.viewMatrix();
     VisibleSamples s;
-    s.pixelAngle = 2.0 * std::tan(0.5 * view.fovY) / 180.0;  // a 180-row pre-pass
+    s.pixelAngle = 2.0 * std::tan(0.5 * view.fovY) / 180.0;
     while (int(s.points.size()) < count) {
-        const glm::dvec3 p{rng.uniform(-6, 6), 0.0, view.eye.z - rng.uniform(4, 80)};
-        const glm::dvec4 c = vp * glm::dvec4(p, 1.0);
-        if (c.w > 0 && std::abs(c.x) < c.w && std::abs(c.y) < c.w && std::abs(c.z) < c.w) s.points.push_back(p);
+        const glm::dvec3 p = draw(rng);
+        if (inView(view, p)) s.points.push_back(p);
     }
     return s;
+}
+
+// A narrow street seen down its length: ground points 6 m either side of the axis, 4-80 m ahead.
+// The view frustum is 140 m wide at 80 m, so V_i n S holds far more than the visible receivers.
+VisibleSamples streetSamples(const ViewFrustum& view, int count, std::uint64_t seed = 3) {
+    return visibleSamples(view, count, seed,
+                          [&](Rng& rng) { return glm::dvec3{rng.uniform(-6, 6), 0.0, view.eye.z - rng.uniform(4, 80)}; });
 }
 
 CascadeParams sdsmParams(SplitParameterization per, const VisibleSamples& samples) {
@@ -123,10 +137,10 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
             ASSERT_TRUE(tight.error.empty()) << tight.error;
             EXPECT_EQ(tight.placement, SplitPlacement::Sdsm);
             EXPECT_TRUE(tight.placementNote.empty());
-            // The practical scheme with the same split depths (lambda 1 over the samples' range).
+            // The practical scheme's slices V_i n S at the same split depths (placed by hand over
+            // the samples' range).
             CascadeParams loose = sdsmParams(per, samples);
             loose.placement = SplitPlacement::Lambda;
-            loose.lambda = 1.0;
             double nearest = 1e300, farthest = 0.0;
             for (const glm::dvec3& p : samples.points) {
                 nearest = std::min(nearest, eyeDepth(view, p));
@@ -134,6 +148,8 @@ TEST(SdsmCascades, TightSplitsHoldTheirSamplesAndCastersWithSmallerTexels) {
             }
             loose.visibleNear = nearest;
             loose.visibleFar = farthest;
+            for (std::size_t i = 0; i + 1 < tight.splits.size(); ++i)
+                loose.manualSplits.push_back((tight.splits[i].zFar - nearest) / (farthest - nearest));
             const CascadeSetup wide = computeCascadeSetup(view, light, terrain(), loose);
             ASSERT_EQ(tight.splits.size(), wide.splits.size());
             int shrunk = 0;
@@ -184,8 +200,8 @@ TEST(SdsmCascades, FallsBackToLambdaAndSaysWhy) {
 }
 
 TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
-    // Samples only at 10-12 m and 60 m: the log splits put none into the middle ones, which then
-    // keep V_i n S rather than an empty map.
+    // Samples only at 10-12 m and 60 m, splits placed by hand at 15 / 25 / 35 m: the middle ones
+    // hold none and keep V_i n S rather than an empty map.
     const ViewFrustum view = sdsmStreetView();
     const glm::dvec3 f = glm::normalize(view.forward);
     VisibleSamples s;
@@ -195,8 +211,9 @@ TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
         p.y = 1.0;  // above the ground, inside S
         s.points.push_back(p);
     }
-    const CascadeSetup cs =
-        computeCascadeSetup(view, sunFrom({0.3, -1, 0.2}), terrain(), sdsmParams(SplitParameterization::Ssm, s));
+    CascadeParams params = sdsmParams(SplitParameterization::Ssm, s);
+    params.manualSplits = {0.1, 0.3, 0.5};
+    const CascadeSetup cs = computeCascadeSetup(view, sunFrom({0.3, -1, 0.2}), terrain(), params);
     ASSERT_EQ(cs.placement, SplitPlacement::Sdsm);
     int empty = 0;
     for (const CascadeSplit& split : cs.splits) {
@@ -207,6 +224,145 @@ TEST(SdsmCascades, ASplitWithoutSamplesKeepsItsSlice) {
         }
     }
     EXPECT_GE(empty, 1);
+}
+
+// Ground 3-80 m ahead, as wide as the view up to 12 m; beyond, a street 12 m wide between walls
+// 8 m high that hide the rest.
+VisibleSamples narrowingStreet(const ViewFrustum& view, int count) {
+    return visibleSamples(view, count, 5, [&](Rng& rng) {
+        const double ahead = rng.uniform(3, 80);
+        const double x = rng.uniform(-60, 60);
+        if (ahead > 12.0 && std::abs(x) > 6.0) return glm::dvec3{x > 0 ? 6.0 : -6.0, rng.uniform(0, 8), view.eye.z - ahead};
+        return glm::dvec3{x, 0.0, view.eye.z - ahead};
+    });
+}
+
+// Ground over the whole view 3-80 m ahead: every split spans the image's width.
+VisibleSamples openGround(const ViewFrustum& view, int count) {
+    return visibleSamples(view, count, 6, [&](Rng& rng) {
+        const double x = rng.uniform(-120, 120);
+        return glm::dvec3{x, 0.0, view.eye.z - rng.uniform(3, 80)};
+    });
+}
+
+// The largest unwarped footprint over the cascade's maps, up to the constant K: texel world
+// size over eye depth at each sample, in the split whose depth range holds it.
+double largestTexelOverDepth(const ViewFrustum& view, const CascadeSetup& cs, const VisibleSamples& samples) {
+    double worst = 0.0;
+    for (const glm::dvec3& p : samples.points) {
+        const double z = eyeDepth(view, p);
+        std::size_t i = 0;
+        while (i + 1 < cs.splits.size() && z >= cs.splits[i].zFar) ++i;
+        worst = std::max(worst, texelWorldSizeAt(cs.splits[i].setup.worldToShadowClip, p, 1024) / z);
+    }
+    return worst;
+}
+
+TEST(SdsmBalance, ANarrowingStreetGetsASmallerWorstFootprint) {
+    const ViewFrustum view = sdsmStreetView();
+    const VisibleSamples samples = narrowingStreet(view, 6000);
+    for (const glm::dvec3 dir : {glm::dvec3(0.3, -1, 0.2), glm::dvec3(-1, -0.5, 0.1)}) {
+        const ShadowLight light = sunFrom(dir);
+        const CascadeSetup balanced = computeCascadeSetup(view, light, terrain(), sdsmParams(SplitParameterization::Ssm, samples));
+        ASSERT_EQ(balanced.placement, SplitPlacement::Sdsm) << balanced.placementNote;
+        // The logarithmic partition over the samples' range, placed by hand, same tight bounds.
+        const glm::dvec3 f = glm::normalize(view.forward);
+        const std::vector<double> log = sdsmSplitDepths(samples, view.eye, f, view.zNear, view.zFar, 4);
+        ASSERT_EQ(log.size(), 5u);
+        CascadeParams byLog = sdsmParams(SplitParameterization::Ssm, samples);
+        for (int i = 1; i < 4; ++i) byLog.manualSplits.push_back((log[i] - log[0]) / (log[4] - log[0]));
+        const CascadeSetup logarithmic = computeCascadeSetup(view, light, terrain(), byLog);
+        ASSERT_EQ(balanced.splits.size(), 4u);
+        // Light from the side: the near splits are as wide as the view, the far ones long and
+        // narrow; the logarithmic partition's near splits hold the worst footprint (1.91 against
+        // 1.61 and 2.95 against 1.99 here).
+        EXPECT_LT(largestTexelOverDepth(view, balanced, samples), 0.9 * largestTexelOverDepth(view, logarithmic, samples));
+        // The prediction the split depths balanced, reported per split.
+        double lo = 1e300, hi = 0.0;
+        for (const CascadeSplit& s : balanced.splits) {
+            EXPECT_GT(s.predictedFootprintPerK, 0.0);
+            lo = std::min(lo, s.predictedFootprintPerK);
+            hi = std::max(hi, s.predictedFootprintPerK);
+        }
+        EXPECT_LT(hi, 1.5 * lo) << "the splits' predicted footprints are balanced";
+    }
+}
+
+TEST(SdsmBalance, SplitsSpanningTheWholeImageKeepTheLogarithmicRatios) {
+    // Light straight down: a split's light-space extent is the view's width at its far end, so
+    // its predicted footprint is proportional to z_far / z_near, equal for every split at the
+    // logarithmic partition.
+    const ViewFrustum view = sdsmStreetView();
+    const VisibleSamples samples = openGround(view, 8000);
+    const glm::dvec3 f = glm::normalize(view.forward);
+    const std::vector<double> log = sdsmSplitDepths(samples, view.eye, f, view.zNear, view.zFar, 4);
+    const BalancedSplits balanced = balancedSplits(samples, view.eye, f, {0, -1, 0}, view.zNear, view.zFar, 4);
+    const std::vector<double>& z = balanced.depths;
+    ASSERT_EQ(log.size(), 5u);
+    ASSERT_EQ(z.size(), 5u);
+    EXPECT_DOUBLE_EQ(z.front(), log.front());
+    EXPECT_DOUBLE_EQ(z.back(), log.back());
+    // The same ratios up to the samples' scatter (the widest sample of a split is not exactly at
+    // its far corners), and no worse a largest prediction than the logarithmic partition's but
+    // for the bins' resolution.
+    const double bin = std::exp(std::log(log.back() / log.front()) / kBalanceBins);
+    auto largest = [&](const std::vector<double>& depths) {
+        double worst = 0.0;
+        for (int i = 0; i < 4; ++i)
+            worst = std::max(worst, predictedSplitFootprint(samples.points, view.eye, f, {0, -1, 0}, depths[i],
+                                                            i == 3 ? 1e300 : depths[i + 1]));
+        return worst;
+    };
+    EXPECT_LE(largest(z), largest(log) * bin);
+    // Each split's prediction, from its bins, is its samples' own.
+    ASSERT_EQ(balanced.predictedPerK.size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        const double own = predictedSplitFootprint(samples.points, view.eye, f, {0, -1, 0}, z[i], i == 3 ? 1e300 : z[i + 1]);
+        EXPECT_NEAR(balanced.predictedPerK[std::size_t(i)], own, 0.01 * own) << i;
+    }
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR((z[i + 1] / z[i]) / (log[i + 1] / log[i]), 1.0, 0.15) << i;
+}
+
+TEST(SdsmBalance, DegenerateInputGivesNoSplitsOrStillIncreasingOnes) {
+    const ViewFrustum view = sdsmStreetView();
+    const glm::dvec3 f = glm::normalize(view.forward), down{0, -1, 0};
+    EXPECT_TRUE(balancedSplits({}, view.eye, f, down, view.zNear, view.zFar, 4).empty());
+    VisibleSamples one;
+    one.points = {view.eye + f * 10.0, view.eye + f * 10.0};
+    EXPECT_TRUE(balancedSplits(one, view.eye, f, down, view.zNear, view.zFar, 4).empty());
+    const VisibleSamples street = narrowingStreet(view, 500);
+    EXPECT_TRUE(balancedSplits(street, view.eye, f, glm::dvec3(0.0), view.zNear, view.zFar, 4).empty());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_TRUE(balancedSplits(street, view.eye, f, glm::dvec3(nan), view.zNear, view.zFar, 4).empty());
+    EXPECT_EQ(predictedSplitFootprint(street.points, view.eye, f, glm::dvec3(0.0), 0.0, 1e300), 0.0);
+    // Two depths for four splits, a NaN point and one behind the eye: four splits all the same,
+    // strictly increasing from the nearest to the farthest sample.
+    VisibleSamples two;
+    two.points = {view.eye + f * 10.0 + glm::dvec3(3, 0, 0), view.eye + f * 60.0, glm::dvec3(nan), view.eye - f * 5.0};
+    const std::vector<double> z = balancedSplits(two, view.eye, f, down, view.zNear, view.zFar, 4).depths;
+    ASSERT_EQ(z.size(), 5u);
+    EXPECT_NEAR(z.front(), 10.0, 1e-9);
+    EXPECT_NEAR(z.back(), 60.0, 1e-9);
+    for (int i = 0; i < 4; ++i) EXPECT_LT(z[i], z[i + 1]);
+    // Looking straight along the light: any axis across it serves.
+    EXPECT_EQ(balancedSplits(street, view.eye, f, f, view.zNear, view.zFar, 4).depths.size(), 5u);
+}
+
+TEST(SdsmBalance, ASpotKeepsTheLogarithmicPartition) {
+    const ViewFrustum view = sdsmStreetView();
+    const VisibleSamples samples = narrowingStreet(view, 2000);
+    ShadowLight spot;
+    spot.kind = ShadowLightKind::Spot;
+    spot.position = {0, 30, 10};
+    spot.direction = glm::normalize(glm::dvec3(0, -1, -0.5));
+    spot.outerConeAngle = 1.2;
+    const CascadeSetup cs = computeCascadeSetup(view, spot, terrain(), sdsmParams(SplitParameterization::Ssm, samples));
+    ASSERT_EQ(cs.placement, SplitPlacement::Sdsm);
+    const std::vector<double> log =
+        sdsmSplitDepths(samples, view.eye, glm::normalize(view.forward), view.zNear, view.zFar, 4);
+    ASSERT_EQ(cs.splits.size(), 4u);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(cs.splits[std::size_t(i)].zFar, log[std::size_t(i) + 1], 1e-9);
+    for (const CascadeSplit& s : cs.splits) EXPECT_EQ(s.predictedFootprintPerK, 0.0);
 }
 
 }  // namespace
