@@ -140,7 +140,9 @@ TEST_F(ShadowRender, SunWarpsAreCheckedOverThePrePassFineGrid) {
         SCOPED_TRACE(methodName(method));
         // Both warps beat SSM on this ground view (loss 0.34 and 0.28 over ~400 points), so both are kept.
         EXPECT_TRUE(stats.shadow.fallback.empty()) << stats.shadow.fallback;
-        if (method == ShadowMethod::Lispsm) EXPECT_GT(stats.shadow.warp, 0.0);
+        if (method == ShadowMethod::Lispsm) {
+            EXPECT_GT(stats.shadow.warp, 0.0);
+        }
         EXPECT_GT(stats.shadow.imageCheckSamples, 100) << "the fine grid's receivers in the light";
         EXPECT_GT(stats.shadow.imageCheckLoss, 0.0);
         EXPECT_LT(stats.shadow.imageCheckLoss, 1.0);
