@@ -85,7 +85,7 @@ struct PsmSettings {
 
 struct BiasSettings {
     DepthDistribution distribution = DepthDistribution::Auto;
-    DepthOffset mode = DepthOffset::SlopeScale;
+    DepthOffset mode = DepthOffset::Adaptive;
     double constant = 0.0005;      // depth units added in the compare (mode == Constant)
     double slopeFactor = 2.0;      // glPolygonOffset factor (paper defaults 2.0 / 4.0)
     double slopeUnits = 4.0;       // glPolygonOffset units
@@ -97,11 +97,11 @@ struct BiasSettings {
     // mode == Adaptive: what is subtracted besides the receiver plane, in texels of the receiver's
     // depth slope (the neighbouring facets of a curved or bumpy surface, the warped maps' non-linear
     // depth over a texel).
-    double adaptiveMargin = 0.5;
+    double adaptiveMargin = 0.25;
     // mode == Adaptive: facets closer than this to the light's direction count as tilted to it, so
     // the plane's depth gradient stays below tan(angle) texels of depth per texel (the clamp): at
     // grazing light a steeper plane moves the compare past real occluders (false light).
-    double adaptiveMaxAngleDeg = 85.0;
+    double adaptiveMaxAngleDeg = 89.0;
     bool operator==(const BiasSettings&) const = default;
 };
 
