@@ -99,12 +99,12 @@ struct BiasSettings {
     // mode == Adaptive: what is subtracted besides the receiver plane, in texels of the receiver's
     // depth slope (the neighbouring facets of a curved or bumpy surface, the warped maps' non-linear
     // depth over a texel). 0.25 with the 89 degree clamp: forest side-sun E_total 0.22%, Sponza
-    // 0.68% (LiSPSM 2048^2, truth; 0.5 gave 0.20 / 0.77, 0.1 gave 0.27 / 0.78: docs/bias.md).
+    // 0.68% (LiSPSM 2048^2, truth; 0.5 gave 0.19 / 0.77, 0.1 gave 0.27 / 0.78: docs/bias.md).
     double adaptiveMargin = 0.25;
     // mode == Adaptive: facets turned further than this from the light count as turned this far, so
     // the plane's depth gradient stays below tan(angle) texels of depth per texel (the clamp): at
     // grazing light a steeper plane moves the compare past real occluders (false light); a facet
-    // beyond it keeps its acne. 89: the crowns' grazing facets of the forest (85 left 0.16% acne).
+    // beyond it keeps its acne. 89: the forest crowns' grazed facets (85: forest E_total 0.42%).
     double adaptiveMaxAngleDeg = 89.0;
     bool operator==(const BiasSettings&) const = default;
 };

@@ -69,6 +69,16 @@ TEST_F(GroundTruthRender, AcneWithoutBiasIsCaughtAsFalseShadow) {
     EXPECT_LT(acne.comparison.falseLight, acne.comparison.receivers / 100);
 }
 
+// The plane-and-box scene's box replaced by `caster` (material 1), placed by `world`.
+void replaceBox(Scene& s, const std::string& name, Primitive caster, const glm::dmat4& world = glm::dmat4(1.0)) {
+    for (const glm::vec3& v : caster.positions) caster.bounds.extend(glm::dvec3(v));
+    s.meshes[1] = {name, {std::move(caster)}};
+    s.instances.pop_back();
+    s.nodes.pop_back();
+    s.bounds = s.instances[0].worldBounds;
+    addInstance(s, 1, world);
+}
+
 // Ground (a thin box, top at y = 0) under a single-sided 3 x 3 m quad at y = 1.5, the sun from
 // above. `frontUp`: the quad's front (glTF winding) faces the sun; `mirrored`: its node scales x
 // by -1, which flips the winding the front is read from (glTF 2.0 3.7.4).
@@ -81,15 +91,10 @@ Scene groundAndQuad(bool frontUp, bool mirrored) {
     quad.normals.assign(4, {0.0f, frontUp ? 1.0f : -1.0f, 0.0f});
     // Counter-clockwise seen from above: (0, 3, 2) and (0, 2, 1) wind around +Y.
     quad.indices = frontUp ? std::vector<std::uint32_t>{0, 3, 2, 0, 2, 1} : std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3};
-    for (const glm::vec3& v : quad.positions) quad.bounds.extend(glm::dvec3(v));
-    s.meshes[1] = {"Quad", {quad}};
-    s.instances.pop_back();
-    s.nodes.pop_back();
-    s.bounds = s.instances[0].worldBounds;
     // Mirrored: the node scales x by -1. The front still faces `frontUp`'s way (the normal matrix
     // keeps y), while the world-space vertices wind the other way round: a reader that ignores the
     // mirror takes the wrong side for the front.
-    addInstance(s, 1, mirrored ? glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)) : glm::dmat4(1.0));
+    replaceBox(s, "Quad", quad, mirrored ? glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)) : glm::dmat4(1.0));
     return s;
 }
 
@@ -151,12 +156,7 @@ Scene groundAndMaskedQuad() {
     quad.normals.assign(4, {0.0f, 1.0f, 0.0f});
     quad.texcoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
     quad.indices = {0, 3, 2, 0, 2, 1};
-    for (const glm::vec3& v : quad.positions) quad.bounds.extend(glm::dvec3(v));
-    s.meshes[1] = {"Leaves", {quad}};
-    s.instances.pop_back();
-    s.nodes.pop_back();
-    s.bounds = s.instances[0].worldBounds;
-    addInstance(s, 1, glm::dmat4(1.0));
+    replaceBox(s, "Leaves", quad);
     return s;
 }
 
@@ -203,12 +203,7 @@ Scene prismAtGrazingSun() {
         // a -> top of b winds counter-clockwise seen from outside (normal = (b - a) x up, outward).
         for (std::uint32_t i : {0u, 3u, 2u, 0u, 2u, 1u}) prism.indices.push_back(base + i);
     }
-    for (const glm::vec3& v : prism.positions) prism.bounds.extend(glm::dvec3(v));
-    s.meshes[1] = {"Prism", {prism}};
-    s.instances.pop_back();
-    s.nodes.pop_back();
-    s.bounds = s.instances[0].worldBounds;
-    addInstance(s, 1, glm::dmat4(1.0));
+    replaceBox(s, "Prism", prism);
     return s;
 }
 
