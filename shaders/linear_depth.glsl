@@ -14,3 +14,11 @@ float linearDepth(vec3 p) {
     float t = uLinearRadial ? distance(p, uLinearOrigin) : dot(p - uLinearOrigin, uLinearAxis);
     return (t - uLinearRange.x) / (uLinearRange.y - uLinearRange.x);
 }
+
+// The depth at p + delta without forming p + delta: far from the origin (p there) a millimetre
+// step is lost in the float rounding (8 mm at 1e5), and the lookup passes the eye-relative point.
+float linearDepthAt(vec3 p, vec3 delta) {
+    vec3 fromOrigin = p - uLinearOrigin;
+    float t = uLinearRadial ? length(fromOrigin + delta) : dot(fromOrigin, uLinearAxis) + dot(delta, uLinearAxis);
+    return (t - uLinearRange.x) / (uLinearRange.y - uLinearRange.x);
+}

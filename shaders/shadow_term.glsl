@@ -18,22 +18,26 @@ uniform float uAdaptiveCosMax;   // cos of the largest facet angle to the light 
 #ifdef CASCADES
 layout(binding = 1) uniform sampler2DArrayShadow uShadowMap;  // one layer per split
 float shadowSample(vec2 uv, float reference, int split) { return texture(uShadowMap, vec4(uv, float(split), reference)); }
-vec4 splitClip(vec3 p, int split) { return cascadeClip(p, split); }
 mat4 splitMatrix(int split) { return uCascadeClip[split]; }
 float splitOffset(int split) { return uCascadeOffset[split]; }
-float splitLinearDepth(vec3 p, int split) {
-    // uLinearRange is (0, 1) in this variant, so linearDepth() is the raw distance t.
+float splitLinearDepth(vec3 q, int split) {
+    // uLinearRange is (0, 1) in this variant, so linearDepthAt() is the raw distance t.
     vec2 range = uCascadeLinearRange[split];
-    return (linearDepth(p) - range.x) / (range.y - range.x);
+    return (linearDepthAt(uShadowOrigin, q) - range.x) / (range.y - range.x);
 }
 #else
 layout(binding = 1) uniform sampler2DShadow uShadowMap;  // compare mode; filter set by the sampler object
 float shadowSample(vec2 uv, float reference, int split) { return texture(uShadowMap, vec3(uv, reference)); }
-vec4 splitClip(vec3 p, int split) { return worldToShadowClip(p); }
 mat4 splitMatrix(int split) { return uWorldToShadowClip; }
 float splitOffset(int split) { return uConstantOffset; }
-float splitLinearDepth(vec3 p, int split) { return linearDepth(p); }
+float splitLinearDepth(vec3 q, int split) { return linearDepthAt(uShadowOrigin, q); }
 #endif
+// The lookups below take q, the point relative to uShadowOrigin (the camera, as uViewOrigin in
+// forward.vert): the matrices are eye-relative (shadow_clip.glsl), and the interpolated world
+// position is rounded to its float steps far from the origin (8 mm at 1e5), which the adaptive
+// bias's small margin and the facet's screen derivatives would see.
+vec4 splitClip(vec3 q, int split) { return splitMatrix(split) * vec4(q, 1.0); }
+in vec3 vEyeRelativePosition;
 
 uniform bool uUseBlurredTerm;
 uniform ivec2 uViewportOrigin;
@@ -64,28 +68,28 @@ float texelWorldSize(mat4 m, vec4 clip) {
 // receivers move most, facing ones not at all. w is the texel's width in that direction, not the
 // larger texel axis: warped maps (PSM, LiSPSM) have texels many times longer one way than the
 // other, and an offset by the long axis reaches past nearby occluders (false light at contacts).
-vec3 normalOffsetPosition(vec3 p, vec3 n, int split) {
-    if (uNormalOffset <= 0.0) return p;
+vec3 normalOffsetPosition(vec3 p, vec3 q, vec3 n, int split) {
+    if (uNormalOffset <= 0.0) return q;
     vec3 toLight;
     incidentLight(p, toLight);
     float cosAngle = dot(n, toLight);
     vec3 across = n - cosAngle * toLight;  // |across| = sin a
     float sinAngle = length(across);
-    if (!(sinAngle > 1e-6)) return p;
+    if (!(sinAngle > 1e-6)) return q;
     vec3 gx, gy;
-    mapJacobian(splitMatrix(split), splitClip(p, split), gx, gy);
+    mapJacobian(splitMatrix(split), splitClip(q, split), gx, gy);
     // NDC per world unit along the direction across the light rays; one texel is 2 / size in NDC.
     vec3 u = across / sinAngle;
     float ndcPerUnit = length(vec2(dot(gx, u), dot(gy, u)));
     float texelWidth = 2.0 * uShadowTexel.x / max(ndcPerUnit, 1e-30);
-    return p + n * (uNormalOffset * texelWidth * sinAngle);
+    return q + n * (uNormalOffset * texelWidth * sinAngle);
 }
 
-// A point in the map's space: NDC x, y and the depth the map stores (linear or window z).
-vec3 mapPoint(vec3 p, int split) {
-    vec4 clip = splitClip(p, split);
+// The eye-relative point q in the map's space: NDC x, y and the depth the map stores (linear or window z).
+vec3 mapPoint(vec3 q, int split) {
+    vec4 clip = splitClip(q, split);
     vec3 ndc = clip.xyz / clip.w;
-    return vec3(ndc.xy, uLinearDepth ? splitLinearDepth(p, split) : ndc.z * 0.5 + 0.5);
+    return vec3(ndc.xy, uLinearDepth ? splitLinearDepth(q, split) : ndc.z * 0.5 + 0.5);
 }
 
 // Adaptive depth bias (Dou, Yan, Kerzner, Dai & Wyman, "Adaptive Depth Bias for Shadow Maps", JCGT
@@ -96,7 +100,7 @@ vec3 mapPoint(vec3 p, int split) {
 // reference + dot(gradient, centre - xy). Facets turned further from the light than
 // bias.adaptiveMaxAngleDeg count as turned by that angle, which bounds the gradient (the clamp:
 // tan 85 = 11.4 texels of depth per texel). false: no usable facet (the plain reference is used).
-bool receiverDepthGradient(vec3 p, vec3 facet, int split, vec4 clip, out vec2 gradient) {
+bool receiverDepthGradient(vec3 p, vec3 q, vec3 facet, int split, vec4 clip, out vec2 gradient) {
     vec3 toLight;
     incidentLight(p, toLight);
     float len = length(facet);
@@ -113,8 +117,8 @@ bool receiverDepthGradient(vec3 p, vec3 facet, int split, vec4 clip, out vec2 gr
     vec3 t1 = normalize(cross(nrm, abs(nrm.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
     vec3 t2 = cross(nrm, t1);
     float step = texelWorldSize(splitMatrix(split), clip);  // about one texel apart: well conditioned
-    vec3 m0 = mapPoint(p, split);
-    vec3 d1 = mapPoint(p + t1 * step, split) - m0, d2 = mapPoint(p + t2 * step, split) - m0;
+    vec3 m0 = mapPoint(q, split);
+    vec3 d1 = mapPoint(q + t1 * step, split) - m0, d2 = mapPoint(q + t2 * step, split) - m0;
     float det = d1.x * d2.y - d2.x * d1.y;
     if (!(abs(det) > 1e-20)) return false;
     gradient = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
@@ -168,18 +172,19 @@ float adaptiveMapTerm(vec2 uv, float reference, vec2 gradient, int split) {
     return sum / float(taps * taps);
 }
 
-float mapTerm(vec3 surface, vec3 n, vec3 facet, int split) {
-    vec3 p = normalOffsetPosition(surface, n, split);
-    vec4 clip = splitClip(p, split);
+// p: the world position (the light's direction there), q: the same point relative to uShadowOrigin.
+float mapTerm(vec3 p, vec3 surface, vec3 n, vec3 facet, int split) {
+    vec3 q = normalOffsetPosition(p, surface, n, split);
+    vec4 clip = splitClip(q, split);
     if (abs(clip.w) < 1e-20) return 1.0;
     vec3 ndc = clip.xyz / clip.w;
     // Outside the focused light frustum there is no visible receiver (B holds them all).
     if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0;
-    float reference = uLinearDepth ? clamp(splitLinearDepth(p, split), 0.0, 1.0) : ndc.z * 0.5 + 0.5;
+    float reference = uLinearDepth ? clamp(splitLinearDepth(q, split), 0.0, 1.0) : ndc.z * 0.5 + 0.5;
     reference += uReverseDepth ? splitOffset(split) : -splitOffset(split);
     vec2 uv = ndc.xy * 0.5 + 0.5;
     vec2 gradient;
-    if (uAdaptiveBias && receiverDepthGradient(p, facet, split, clip, gradient))
+    if (uAdaptiveBias && receiverDepthGradient(p, q, facet, split, clip, gradient))
         return adaptiveMapTerm(uv, reference, gradient, split);
     if (uShadowFilter <= 1) return shadowSample(uv, reference, split);
     int taps = uShadowFilter == 2 ? 3 : 4;
@@ -196,13 +201,14 @@ float shadowTerm(vec3 p, vec3 n) {
     if (!uShadowsEnabled) return 1.0;
     // The rasterised facet's plane, taken here in uniform control flow (derivatives are undefined
     // inside the per-pixel branches below).
-    vec3 facet = cross(dFdx(p), dFdy(p));
+    vec3 q = vEyeRelativePosition;
+    vec3 facet = cross(dFdx(q), dFdy(q));
 #ifdef CASCADES
     int split = cascadeIndex(p);
-    float term = mapTerm(p, n, facet, split);
+    float term = mapTerm(p, q, n, facet, split);
     float blend = cascadeBlendWeight(p, split);
-    return blend > 0.0 ? mix(term, mapTerm(p, n, facet, split + 1), blend) : term;
+    return blend > 0.0 ? mix(term, mapTerm(p, q, n, facet, split + 1), blend) : term;
 #else
-    return mapTerm(p, n, facet, 0);
+    return mapTerm(p, q, n, facet, 0);
 #endif
 }

@@ -121,7 +121,9 @@ TEST_F(FrameSkips, PostProcessSettingsReuseTheMapAndWhatItDependsOnRendersItAgai
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.light.source = LightSource::Sun, c.light.azimuthDeg += 5.0; }));
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.camera.yawDeg += 2.0; }));  // LiSPSM follows the view
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.shadowMapSize = 1024; }));
-    EXPECT_FALSE(reusedAfter([](Settings& c) { c.bias.slopeFactor = 3.0; }));
+    // The default adaptive bias acts in the lookup only; the slope-scale offset is in the map.
+    EXPECT_TRUE(reusedAfter([](Settings& c) { c.bias.adaptiveMargin = 0.5; }));
+    EXPECT_FALSE(reusedAfter([](Settings& c) { c.bias.mode = DepthOffset::SlopeScale, c.bias.slopeFactor = 3.0; }));
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.casters.singleSided = CasterFaces::Back; }));
     EXPECT_FALSE(reusedAfter([](Settings& c) { c.skip.reuseShadowMap = false; }));
     // Moved casters (animation): the same settings, new instance matrices.

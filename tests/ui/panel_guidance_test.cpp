@@ -24,7 +24,7 @@ TEST(AbCompare, NamesEverySettingThatDiffers) {
     b.bias.mode = DepthOffset::Constant;
     const std::vector<std::string> lines = differingSettings(a, b);
     // Keys in the settings' key order (alphabetical, as `shadowlab settings` lists them).
-    EXPECT_EQ(lines, (std::vector<std::string>{"bias.mode: slope -> constant", "shadowMapSize: 2048 -> 512"}));
+    EXPECT_EQ(lines, (std::vector<std::string>{"bias.mode: adaptive -> constant", "shadowMapSize: 2048 -> 512"}));
     EXPECT_TRUE(differingSettings(a, a).empty());
 }
 
