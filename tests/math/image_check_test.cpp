@@ -8,6 +8,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+#include <limits>
+
 namespace shadowlab::detail {
 namespace {
 
@@ -102,6 +105,43 @@ TEST(ImageCheck, FewPointsInTheLightLeaveItInactive) {
     const ImageCheck none(v, sun, {}, orthoMap(sun, 120.0));
     EXPECT_FALSE(none.active());
     EXPECT_FALSE(none.tooFewSamples());
+}
+
+// Hostile receivers (NaN, infinite, zero normals, behind the eye) are skipped, never counted, and
+// the setup stays finite with them in the fine grid.
+TEST(ImageCheck, DegenerateReceiversAreSkipped) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = {0.3, -0.7, -0.4};
+    std::vector<SurfacePoint> fine = fineGridOnGround(v);
+    const std::size_t good = ImageCheck(v, sun, fine, orthoMap(sun, 120.0)).uniform().samples;
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 50; ++i) {
+        fine.push_back({{nan, 0.0, -10.0}, {0.0, 1.0, 0.0}});
+        fine.push_back({{0.0, 0.0, -10.0}, {nan, nan, nan}});
+        fine.push_back({{inf, 0.0, -10.0}, {0.0, 1.0, 0.0}});
+        fine.push_back({{0.0, 0.0, -10.0}, {0.0, 0.0, 0.0}});
+        fine.push_back({{0.0, 0.0, 50.0}, {0.0, 1.0, 0.0}});  // behind the eye
+    }
+    const ImageCheck check(v, sun, fine, orthoMap(sun, 120.0));
+    ASSERT_TRUE(check.active());
+    EXPECT_EQ(check.uniform().samples, good);
+    EXPECT_TRUE(std::isfinite(check.uniform().p99));
+    ShadowParams p;
+    p.method = ShadowMethod::Lispsm;
+    p.receiverPoints = fineGridOnGround(v);
+    p.fineReceiverPoints = fine;
+    Aabb scene;
+    scene.min = {-300.0, 0.0, -300.0};
+    scene.max = {300.0, 20.0, 300.0};
+    for (const ShadowMethod m : {ShadowMethod::Lispsm, ShadowMethod::Psm}) {
+        p.method = m;
+        const ShadowSetup s = computeShadowSetup(v, sun, scene, p);
+        ASSERT_TRUE(s.valid);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(s.worldToShadowClip[c][r]));
+        EXPECT_TRUE(std::isfinite(s.diagnostics.imageCheckLoss));
+    }
 }
 
 }  // namespace
