@@ -46,10 +46,10 @@ struct ReceiverSample {
 // Fewer measured receivers than this in the light and a spot light's finer grid is consulted
 // (receiversInLight), and PSM's guard also checks the stand-ins (shadow_setup.cpp).
 constexpr std::size_t kEnoughMeasuredReceivers = 16;
-// Without measured receivers (LiSPSM: or fewer than kEnoughMeasuredReceivers of them) a warp
-// (LiSPSM's, or PSM by its guard) is taken only where the samples promise this gain over SSM's
-// largest footprint: they bound where receivers can be, not
-// where they are, and a smaller promised gain was about as often a loss on the image (sweep).
+// Without measured receivers, or with fewer than kEnoughMeasuredReceivers of them, LiSPSM's warp
+// is taken only where the samples promise this gain over SSM's largest footprint: they bound
+// where receivers can be, not where they are, and a smaller promised gain was about as often a
+// loss on the image (sweep). (PSM is not used without measured receivers: shadow_setup.cpp.)
 constexpr double kStandInGain = 1.25;
 // With the stand-ins alone under a spot light, LiSPSM takes u = ln(f/n) at this share of the u
 // the search found. Sweep, seed 1, without receivers, 2000 walk-through + 1000 hard spot views:

@@ -292,7 +292,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
 
     // The image check over the pre-pass's fine grid (math/image_check.h), against the uniform map.
     const bool checkImage = params.imageCheck && !params.fineReceiverPoints.empty() &&
-                            (params.method == ShadowMethod::Lispsm || params.method == ShadowMethod::Psm);
+                            (params.method == ShadowMethod::Lispsm || (params.method == ShadowMethod::Psm && params.psmGuard));
     const ImageCheck image = checkImage ? ImageCheck(view, light, params.fineReceiverPoints, ssm(bv)) : ImageCheck();
 
     glm::dmat4 M{1.0};
