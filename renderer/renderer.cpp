@@ -311,10 +311,8 @@ VisibleDepthRange Renderer::visibleDepthRange(const Frame& frame, FrameStats& st
     // Spot lights (a cone lighting a few grid points), cascades (a split holding a few of them)
     // and the image check of a warp also sample the fine grid (math/lispsm_search.h,
     // math/cascades.h, math/image_check.h).
-    const Settings& st = frame.settings;
-    const bool imageCheck = (st.method == ShadowMethod::Lispsm && st.lispsm.imageCheck) ||
-                            (st.method == ShadowMethod::Psm && st.psm.guard);
-    view.fineReceivers = frame.light.type == LightType::Spot || st.csm.enabled || imageCheck;
+    view.fineReceivers =
+        frame.light.type == LightType::Spot || frame.settings.csm.enabled || warpImageCheck(frame.settings);
     view.samples = frame.settings.csm.enabled && frame.settings.csm.placement == SplitPlacement::Sdsm;
     auto drawDepth = [&](const glm::dmat4& viewProjection) {
         const ProgramFor programs = passPrograms(shadowDepth_, true, frame.settings, [&](const gl::Program& p) {

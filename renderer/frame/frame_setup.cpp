@@ -115,6 +115,11 @@ bool boxMayBeVisible(const ClipPlanes& c, const Aabb& box) {
     return true;
 }
 
+bool warpImageCheck(const Settings& settings) {
+    return (settings.method == ShadowMethod::Lispsm && settings.lispsm.imageCheck) ||
+           (settings.method == ShadowMethod::Psm && settings.psm.guard);
+}
+
 ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, const Aabb& sceneBounds) {
     ShadowParams p;
     p.method = settings.method;
@@ -122,7 +127,7 @@ ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, con
     const OverlaySettings& o = settings.overlays;
     p.collectPolygons = o.observerInset || o.lightViewInset;
     p.psmGuard = settings.psm.guard;
-    p.imageCheck = settings.method == ShadowMethod::Psm ? settings.psm.guard : settings.lispsm.imageCheck;
+    p.imageCheck = warpImageCheck(settings);
     p.lispsm.useBodyVector = settings.lispsm.useBodyVector;
     p.lispsm.overrideN = settings.lispsm.overrideN;
     p.lispsm.n = settings.lispsm.n;

@@ -42,5 +42,8 @@ struct ClipPlanes {
 ClipPlanes clipPlanes(const glm::dmat4& viewProjection);
 bool boxMayBeVisible(const ClipPlanes& planes, const Aabb& box);
 ShadowParams shadowParams(const Settings& settings, const ViewFrustum& view, const Aabb& sceneBounds);
+// Whether the method's warp is checked over the pre-pass's fine grid (ShadowParams::imageCheck):
+// LiSPSM with lispsm.imageCheck, PSM with its guard.
+bool warpImageCheck(const Settings& settings);
 
 }  // namespace shadowlab

@@ -110,6 +110,41 @@ NChoice chooseN(const LightSpace& ls, const std::vector<glm::dvec3>& body, const
     return c;
 }
 
+// The warp k after the image check (math/image_check.h); M is its matrix. `depth`: B's light-space
+// z extent, over which the search's variable is u = ln(1 + k depth).
+template <typename Warped>
+double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool spot, const Warped& warped, glm::dmat4& M,
+                        ShadowDiagnostics& diag) {
+    // The warp at a share of the searched u.
+    auto weaker = [&](double share) { return depth > 0.0 ? std::expm1(share * std::log1p(k * depth)) / depth : 0.0; };
+    if (spot && check.tooFewSamples()) {
+        // A spot lighting too little of the image for the check: the share of u the stand-ins
+        // get (kStandInSpotWarpShare; hard-view sweep, seed 1: a spot lighting 1% of the image,
+        // under 8 points of the grid, lost 1.54x SSM; no spot view above 1.36x with this).
+        const double kk = weaker(kStandInSpotWarpShare);
+        M = warped(kk);
+        return kk;
+    }
+    if (!check.active()) return k;
+    // Where the searched warp loses over the image, weaker warps at fixed shares of u, then the
+    // uniform map.
+    const FootprintQuantiles searched = check.quantilesOf(M);
+    diag.imageCheckLoss = check.lossOf(searched);
+    diag.imageCheckSamples = int(check.uniform().samples);
+    if (check.accepts(searched)) return k;
+    for (const double share : kImageCheckWarpShares) {
+        const double kk = weaker(share);
+        if (!(kk > 0.0)) continue;
+        const glm::dmat4 candidate = warped(kk);
+        if (check.accepts(check.quantilesOf(candidate))) {
+            M = candidate;
+            return kk;
+        }
+    }
+    M = warped(0.0);
+    return 0.0;
+}
+
 }  // namespace
 
 glm::dmat4 uniformMatrix(const LightSpace& ls, const std::vector<glm::dvec3>& pts) {
@@ -184,36 +219,8 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
     // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
     auto warped = [&](double kk) { return fitToPoints(lispsmPreFit(zNearLs, els.x, kk, e.y.lo) * ls.L, bv, true); };
     M = warped(k);
-    if (!params.overrideN && k > 0.0 && spot && in.imageCheck && in.imageCheck->tooFewSamples()) {
-        // A spot lighting too little of the image for the check: the share of u the stand-ins
-        // get (kStandInSpotWarpShare; hard-view sweep, seed 1: a spot lighting 1% of the image,
-        // under 8 points of the grid, lost 1.54x SSM; no spot view above 1.36x with this).
-        const double depth = e.z.hi - e.z.lo;
-        k = depth > 0.0 ? std::expm1(kStandInSpotWarpShare * std::log1p(k * depth)) / depth : 0.0;
-        M = warped(k);
-    } else if (!params.overrideN && k > 0.0 && in.imageCheck && in.imageCheck->active()) {
-        // The searched warp over the image (math/image_check.h); where it loses, weaker warps at
-        // fixed shares of u = ln(1 + k d) (the search's own variable), then the uniform map.
-        const double depth = e.z.hi - e.z.lo;
-        const double u = std::log1p(k * depth);
-        const FootprintQuantiles searched = in.imageCheck->quantilesOf(M);
-        diag.imageCheckLoss = in.imageCheck->lossOf(searched);
-        diag.imageCheckSamples = int(in.imageCheck->uniform().samples);
-        if (!in.imageCheck->accepts(searched)) {
-            double kept = 0.0;
-            for (const double share : kImageCheckWarpShares) {
-                const double kk = depth > 0.0 ? std::expm1(share * u) / depth : 0.0;
-                const glm::dmat4 candidate = warped(kk);
-                if (kk > 0.0 && in.imageCheck->accepts(in.imageCheck->quantilesOf(candidate))) {
-                    kept = kk;
-                    M = candidate;
-                    break;
-                }
-            }
-            if (kept == 0.0) M = warped(0.0);
-            k = kept;
-        }
-    }
+    if (!params.overrideN && k > 0.0 && in.imageCheck)
+        k = imageCheckedWarp(*in.imageCheck, k, e.z.hi - e.z.lo, spot, warped, M, diag);
     diag.warp = k;
     diag.nUsed = k > 0.0 ? 1.0 / k : kInf;
     if (k > 0.0) {

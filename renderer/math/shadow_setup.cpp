@@ -293,7 +293,10 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     // The image check over the pre-pass's fine grid (math/image_check.h), against the uniform map.
     const bool checkImage = params.imageCheck && !params.fineReceiverPoints.empty() &&
                             (params.method == ShadowMethod::Lispsm || (params.method == ShadowMethod::Psm && params.psmGuard));
-    const ImageCheck image = checkImage ? ImageCheck(view, light, params.fineReceiverPoints, ssm(bv)) : ImageCheck();
+    // The focused SSM in this frame: the map the image check and PSM's guard compare with.
+    const bool needUniform = checkImage || params.method == ShadowMethod::Psm;
+    const glm::dmat4 uniform = needUniform ? ssm(bv) : glm::dmat4(1.0);
+    const ImageCheck image = checkImage ? ImageCheck(view, light, params.fineReceiverPoints, uniform) : ImageCheck();
 
     glm::dmat4 M{1.0};
     bool reverse = false;
@@ -320,7 +323,6 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
                                                                      depthNear, depthFar, measured, fineJoined,
                                                                      prePassRan)
                                                       : std::vector<std::vector<ReceiverSample>>{};
-            const glm::dmat4 uniform = uniformMatrix(ls, bv);
             M = guardedPsm(view, basis, light, bv, uniform, params.psmGuard ? &receiverSets : nullptr, diag, reverse);
             if (params.psmGuard && image.active() && diag.fallback.empty()) imageCheckedPsm(image, uniform, diag, M, reverse);
             break;
