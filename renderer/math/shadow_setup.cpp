@@ -210,6 +210,8 @@ ShadowSetup psmWithPushedNearPlane(const ViewFrustum& view, const ShadowLight& l
     d.psmNear = psm.diagnostics.psmNear;
     d.psmFar = psm.diagnostics.psmFar;
     d.psmLightKind = psm.diagnostics.psmLightKind;
+    d.imageCheckLoss = psm.diagnostics.imageCheckLoss;
+    d.imageCheckSamples = psm.diagnostics.imageCheckSamples;
     return ssm;
 }
 
