@@ -1,6 +1,7 @@
 // LiSPSM: the choice of n (thesis 8.2-8.3, 9.2.5) and the warp matrix (9.2.4).
 #include "math/lispsm.h"
 
+#include "math/image_check.h"
 #include "math/lispsm_search.h"
 
 namespace shadowlab {
@@ -219,8 +220,10 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
     // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
     auto warped = [&](double kk) { return fitToPoints(lispsmPreFit(zNearLs, els.x, kk, e.y.lo) * ls.L, bv, true); };
     M = warped(k);
-    if (!params.overrideN && k > 0.0 && in.imageCheck)
-        k = imageCheckedWarp(*in.imageCheck, k, e.z.hi - e.z.lo, spot, warped, M, diag);
+    if (!params.overrideN && k > 0.0 && in.imageReceivers) {
+        const ImageCheck check(view, light, *in.imageReceivers, uniformMatrix(ls, bv));
+        k = imageCheckedWarp(check, k, e.z.hi - e.z.lo, spot, warped, M, diag);
+    }
     diag.warp = k;
     diag.nUsed = k > 0.0 ? 1.0 / k : kInf;
     if (k > 0.0) {

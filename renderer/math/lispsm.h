@@ -3,8 +3,6 @@
 // perspective P along the view direction projected on the shadow plane, in light space.
 #include "math/light_space.h"
 
-#include "math/image_check.h"
-
 namespace shadowlab::detail {
 
 struct LispsmInputs {
@@ -19,7 +17,8 @@ struct LispsmInputs {
     const std::vector<SurfacePoint>& measuredReceivers;
     glm::dvec3 eWorld;                            // thesis 9.2.3
     double rayLength = 1.0;                       // a length of B's scale (for finite differences)
-    const ImageCheck* imageCheck = nullptr;       // checks the searched warp over the image (may be null)
+    // The pre-pass's fine grid, over which the searched warp is checked (math/image_check.h); null: no check.
+    const std::vector<SurfacePoint>* imageReceivers = nullptr;
 };
 
 // The world -> shadow-clip matrix; fills the LiSPSM part of `diag` (n, gamma, d, z0, z1, C, P).

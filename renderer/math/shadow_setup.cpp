@@ -292,13 +292,10 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
     const bool fineJoined = &measured == &measuredStorage;
     const bool prePassRan = !params.receiverPoints.empty() || !params.fineReceiverPoints.empty();
 
-    // The image check over the pre-pass's fine grid (math/image_check.h), against the uniform map.
-    const bool checkImage = params.imageCheck && !params.fineReceiverPoints.empty() &&
-                            (params.method == ShadowMethod::Lispsm || (params.method == ShadowMethod::Psm && params.psmGuard));
-    // The focused SSM in this frame: the map the image check and PSM's guard compare with.
-    const bool needUniform = checkImage || params.method == ShadowMethod::Psm;
-    const glm::dmat4 uniform = needUniform ? ssm(bv) : glm::dmat4(1.0);
-    const ImageCheck image = checkImage ? ImageCheck(view, light, params.fineReceiverPoints, uniform) : ImageCheck();
+    // The image check's receivers (math/image_check.h): the pre-pass's fine grid. The check itself
+    // is built only where a warp is there to check (LiSPSM's k > 0, PSM past its guard).
+    const std::vector<SurfacePoint>* imageReceivers =
+        params.imageCheck && !params.fineReceiverPoints.empty() ? &params.fineReceiverPoints : nullptr;
 
     glm::dmat4 M{1.0};
     bool reverse = false;
@@ -316,7 +313,7 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
         }
         case ShadowMethod::Lispsm: {
             const LispsmInputs in{view,         basis,   light, sceneBounds, ls, bv, receiverBody, receiverVertices,
-                                  measured,     eWorld,  rayLength, &image};
+                                  measured,     eWorld,  rayLength, imageReceivers};
             M = lispsmMatrix(in, params.lispsm, params.collectPolygons, diag);
             break;
         }
@@ -325,8 +322,12 @@ ShadowSetup computeShadowSetup(const ViewFrustum& view, const ShadowLight& light
                                                                      depthNear, depthFar, measured, fineJoined,
                                                                      prePassRan)
                                                       : std::vector<std::vector<ReceiverSample>>{};
+            const glm::dmat4 uniform = ssm(bv);
             M = guardedPsm(view, basis, light, bv, uniform, params.psmGuard ? &receiverSets : nullptr, diag, reverse);
-            if (params.psmGuard && image.active() && diag.fallback.empty()) imageCheckedPsm(image, uniform, diag, M, reverse);
+            if (params.psmGuard && imageReceivers && diag.fallback.empty()) {
+                const ImageCheck image(view, light, *imageReceivers, uniform);
+                if (image.active()) imageCheckedPsm(image, uniform, diag, M, reverse);
+            }
             break;
         }
     }
