@@ -1,6 +1,9 @@
 #include "frame/frame_stats.h"
 
+#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+
+#include <cmath>
 
 namespace shadowlab {
 
@@ -24,6 +27,20 @@ std::string frameStatsJson(const FrameStats& s) {
                     {"clustersVisible", c.clustersVisible},
                     {"clustersCulled", c.clustersCulled}};
     };
+    // The setup's scalars (the UI panels' readouts): which warp ran and why.
+    const ShadowDiagnostics& d = s.shadow;
+    const json shadowSetup = {
+        {"method", methodName(d.method)},
+        {"focused", d.focused},
+        {"nUsed", std::isfinite(d.nUsed) ? json(d.nUsed) : json("inf")},
+        {"nOpt", std::isfinite(d.nOptReal) ? json(d.nOptReal) : json("inf")},
+        {"gammaDeg", glm::degrees(d.gamma)},
+        {"warpSamples", d.warpSamples},
+        {"estimatedGainOverSsm", d.estimatedGainOverSsm},
+        {"imageCheckLoss", d.imageCheckLoss},
+        {"imageCheckSamples", d.imageCheckSamples},
+        {"fallback", d.fallback},
+    };
     json passes = json::array();
     for (const PassStats& p : s.passes) passes.push_back({{"name", p.name}, {"cpuMs", p.cpuMs}, {"gpuMs", p.gpuMs}});
     const json j = {
@@ -45,6 +62,7 @@ std::string frameStatsJson(const FrameStats& s) {
         {"shadowMapReused", s.shadowMapReused},
         {"cascadeLayersReused", s.cascadeLayersReused},
         {"visibleDepth", visibleDepthSourceName(s.visibleDepth)},
+        {"shadowSetup", shadowSetup},
         {"passes", passes},
     };
     return j.dump(2);

@@ -111,13 +111,42 @@ NChoice chooseN(const LightSpace& ls, const std::vector<glm::dvec3>& body, const
     return c;
 }
 
+// The warp whose u = ln(1 + k depth) is `share` of the warp k's.
+double warpAtShareOfU(double k, double depth, double share) {
+    return depth > 0.0 ? std::expm1(share * std::log1p(k * depth)) / depth : 0.0;
+}
+
+// Where the search's warp is far weaker than the closed form's (kOpt) or none, warps at shares of
+// kOpt's u scored over the fine grid: the one with the lowest loss is kept if it promises
+// kImageRescueTolerance at both quantiles and beats the warp in hand (k, M); else k and M stay.
+template <typename Warped>
+double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double depth, const Warped& warped,
+                        glm::dmat4& M, ShadowDiagnostics& diag) {
+    if (!check.active() || check.uniform().samples < kFewImageSamples) return k;
+    const double inHand = k > 0.0 ? check.lossOf(check.quantilesOf(M)) : 1.0;
+    double best = k, bestLoss = std::min(inHand, kImageRescueTolerance);
+    for (const double share : kImageRescueWarpShares) {
+        const double kk = warpAtShareOfU(kOpt, depth, share);
+        if (!(kk > k) || !std::isfinite(kk)) continue;
+        const glm::dmat4 candidate = warped(kk);
+        const double loss = check.lossOf(check.quantilesOf(candidate));
+        if (loss < bestLoss) {
+            best = kk;
+            bestLoss = loss;
+            M = candidate;
+        }
+    }
+    diag.imageCheckSamples = int(check.uniform().samples);
+    if (best != k) diag.imageCheckLoss = bestLoss;
+    return best;
+}
+
 // The warp k after the image check (math/image_check.h); M is its matrix. `depth`: B's light-space
 // z extent, over which the search's variable is u = ln(1 + k depth).
 template <typename Warped>
 double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool spot, const Warped& warped, glm::dmat4& M,
                         ShadowDiagnostics& diag) {
-    // The warp at a share of the searched u.
-    auto weaker = [&](double share) { return depth > 0.0 ? std::expm1(share * std::log1p(k * depth)) / depth : 0.0; };
+    auto weaker = [&](double share) { return warpAtShareOfU(k, depth, share); };
     if (spot && check.tooFewSamples()) {
         // A spot lighting too little of the image for the check: the share of u the stand-ins
         // get (kStandInSpotWarpShare; hard-view sweep, seed 1: a spot lighting 1% of the image,
@@ -220,9 +249,15 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
     // Thesis 9.2.4: C_start = (e_ls.x, e_ls.y, B_znear); C = C_start + n along +z.
     auto warped = [&](double kk) { return fitToPoints(lispsmPreFit(zNearLs, els.x, kk, e.y.lo) * ls.L, bv, true); };
     M = warped(k);
-    if (!params.overrideN && k > 0.0 && in.imageReceivers) {
+    // The closed form's warp for a sun (eq. 8.11 over the measured depth range); a spot's search
+    // starts from eq. 8.13 of the real body and is not rescued.
+    const double kOpt = !spot && std::isfinite(diag.nOptVirtual) && diag.nOptVirtual > 0.0 ? 1.0 / diag.nOptVirtual : 0.0;
+    const double depth = e.z.hi - e.z.lo;
+    const bool rescue = kOpt > 0.0 && !(warpAtShareOfU(kOpt, depth, kImageRescueBelowShare) < k);
+    if (!params.overrideN && in.imageReceivers && (k > 0.0 || rescue)) {
         const ImageCheck check(view, light, *in.imageReceivers, uniformMatrix(ls, bv));
-        k = imageCheckedWarp(check, k, e.z.hi - e.z.lo, spot, warped, M, diag);
+        if (k > 0.0) k = imageCheckedWarp(check, k, depth, spot, warped, M, diag);
+        if (rescue) k = imageRescuedWarp(check, k, kOpt, depth, warped, M, diag);
     }
     diag.warp = k;
     diag.nUsed = k > 0.0 ? 1.0 / k : kInf;

@@ -146,3 +146,45 @@ TEST(ImageCheck, DegenerateReceiversAreSkipped) {
 
 }  // namespace
 }  // namespace shadowlab::detail
+
+namespace shadowlab::detail {
+namespace {
+
+// Where the warp search keeps the uniform map, or a warp far weaker than the closed form's, because
+// one coarse-grid receiver would lose under any stronger warp (a far wall the sun grazes: its
+// footprint is all the search sees), the warps at shares of the closed form's u are scored over the
+// fine grid and the best kept where the image prefers it.
+TEST(ImageCheck, RescuesAWarpTheCoarseGridRefused) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = glm::normalize(glm::dvec3(0.3, -0.7, -0.4));
+    Aabb scene;
+    scene.min = {-300.0, 0.0, -300.0};
+    scene.max = {300.0, 20.0, 300.0};
+    const std::vector<SurfacePoint> ground = fineGridOnGround(v);
+    for (const double wallDistance : {190.0, 150.0}) {
+        SCOPED_TRACE(wallDistance);
+        ShadowParams p;
+        p.method = ShadowMethod::Lispsm;
+        for (std::size_t i = 0; i < ground.size(); i += 16) p.receiverPoints.push_back(ground[i]);
+        p.receiverPoints.push_back({{0.0, 0.5, -wallDistance}, glm::normalize(glm::dvec3(0.8, 0.0, 0.62))});
+        const ShadowSetup coarseOnly = computeShadowSetup(v, sun, scene, p);
+        ASSERT_TRUE(coarseOnly.valid);
+        EXPECT_GT(coarseOnly.diagnostics.nUsed, 1000.0);  // the uniform map, or nearly
+        p.fineReceiverPoints = ground;
+        const ShadowSetup rescued = computeShadowSetup(v, sun, scene, p);
+        ASSERT_TRUE(rescued.valid);
+        EXPECT_LT(rescued.diagnostics.nUsed, 20.0);
+        EXPECT_LT(rescued.diagnostics.imageCheckLoss, kImageRescueTolerance);
+        // Over the image (the fine grid, against the focused SSM): the coarse grid's choice is
+        // (nearly) the uniform map, the rescued warp a fraction of it.
+        ShadowParams ssm = p;
+        ssm.method = ShadowMethod::SsmFocused;
+        const ImageCheck check(v, sun, ground, computeShadowSetup(v, sun, scene, ssm).worldToShadowClip);
+        EXPECT_GT(check.lossOf(check.quantilesOf(coarseOnly.worldToShadowClip)), 0.85);
+        EXPECT_LT(check.lossOf(check.quantilesOf(rescued.worldToShadowClip)), 0.2);
+    }
+}
+
+}  // namespace
+}  // namespace shadowlab::detail

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <memory>
 
@@ -304,6 +305,16 @@ TEST_F(FrameSkips, StatsJsonCarriesTheFiguresOfTheFrame) {
     EXPECT_EQ(j["castersDrawn"].get<std::size_t>() + j["castersCulled"].get<std::size_t>(), scene.instances.size());
     EXPECT_TRUE(j["passes"].is_array());
     EXPECT_TRUE(j.contains("cullingCpuMs"));
+    // The setup's readouts: which warp ran, with n as "inf" where it is the uniform map.
+    const nlohmann::json& setup = j["shadowSetup"];
+    EXPECT_EQ(setup["method"], methodName(stats.shadow.method));
+    EXPECT_EQ(setup["warpSamples"], stats.shadow.warpSamples);
+    EXPECT_DOUBLE_EQ(setup["imageCheckLoss"].get<double>(), stats.shadow.imageCheckLoss);
+    if (std::isfinite(stats.shadow.nUsed)) {
+        EXPECT_DOUBLE_EQ(setup["nUsed"].get<double>(), stats.shadow.nUsed);
+    } else {
+        EXPECT_EQ(setup["nUsed"], "inf");
+    }
 }
 
 }  // namespace
