@@ -343,6 +343,11 @@ std::string SweepReport::text() const {
                 }
         for (const auto& m : list)
             if (!m.worstCase.empty()) s << "  worst " << shadowMethodName(m.method) << ": " << m.worstCase << "\n";
+        for (const auto& m : list)
+            for (const auto& [ratio, view] : m.viewsOver50) {
+                std::snprintf(buf, sizeof buf, "  > 1.5x %-8s %6.3gx: ", shadowMethodName(m.method), ratio);
+                s << buf << view << "\n";
+            }
     };
     table("sun", directionalViews, directional);
     table("spot", spotViews, spot);
@@ -363,7 +368,11 @@ SweepReport runMethodSweep(const SweepOptions& o) {
     for (int kind = 0; kind < 2; ++kind) {
         const bool spot = kind == 1;
         auto& list = spot ? report.spot : report.directional;
-        for (ShadowMethod m : warps) list.push_back(SweepMethodFigures{m, 0, 0, 0, 0, 0.0, {}, {}, 0.0, {}, {}, {}});
+        for (ShadowMethod m : warps) {
+            SweepMethodFigures figures;
+            figures.method = m;
+            list.push_back(figures);
+        }
         const std::uint64_t wanted = spot ? o.spotViews : o.directionalViews;
         Rng rng(o.seed * 2 + std::uint64_t(kind));
         std::uint64_t done = 0;
@@ -383,6 +392,8 @@ SweepReport runMethodSweep(const SweepOptions& o) {
                 ++fig.views;
                 fig.worse5 += ratio > 1.05;
                 fig.worse50 += ratio > 1.5;
+                if (ratio > 1.5 && fig.viewsOver50.size() < SweepMethodFigures::kListedViewsOver50)
+                    fig.viewsOver50.emplace_back(ratio, c.describe());
                 const auto cls = std::size_t(c.viewClass);
                 ++fig.classViews[cls];
                 fig.classWorse5[cls] += ratio > 1.05;

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -67,6 +68,9 @@ struct SweepMethodFigures {
     double worstRatio = 0.0;  // largest p99 / SSM p99
     std::string worstCase;
     SweepCase worstView;
+    // The views above 1.5x SSM (ratio, description), the first kListedViewsOver50 of them.
+    std::vector<std::pair<double, std::string>> viewsOver50;
+    static constexpr std::size_t kListedViewsOver50 = 16;
     double logGainSum = 0.0;  // sum of log(SSM p99 / method p99)
     // Per SweepViewClass: views, > 1.05x, > 1.5x.
     std::array<std::uint64_t, kSweepViewClasses> classViews{}, classWorse5{}, classWorse50{};

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -65,6 +66,26 @@ TEST(MethodSweep, HardViewsNoWarpLosesByHalf) {
     EXPECT_GT(figuresOf(r.directional, ShadowMethod::Lispsm).classViews[std::size_t(SweepViewClass::TallReceivers)],
               200u);
     EXPECT_GT(figuresOf(r.directional, ShadowMethod::Lispsm).geometricMeanGain(), 5.0);
+}
+
+// The report lists the views above 1.5x SSM, each with its ratio and view, so a failing sweep
+// names what to look at: without the image check the hard views of seed 1 have some.
+TEST(MethodSweep, ListsTheViewsAboveHalfWorse) {
+    SweepOptions o;
+    o.directionalViews = 1000;
+    o.spotViews = 0;
+    o.hardViewClasses = true;
+    o.imageCheck = false;
+    const SweepReport r = runMethodSweep(o);
+    const auto& sun = figuresOf(r.directional, ShadowMethod::Lispsm);
+    ASSERT_GT(sun.worse50, 0u);
+    EXPECT_EQ(sun.viewsOver50.size(), std::min<std::size_t>(sun.worse50, SweepMethodFigures::kListedViewsOver50));
+    for (const auto& [ratio, view] : sun.viewsOver50) {
+        EXPECT_GT(ratio, 1.5);
+        EXPECT_LE(ratio, sun.worstRatio);
+        EXPECT_NE(r.text().find(view), std::string::npos);
+    }
+    EXPECT_NE(r.text().find("> 1.5x lispsm"), std::string::npos);
 }
 
 // Without the pre-pass's receiver points the warps measure at stand-ins (the visible lit body's
