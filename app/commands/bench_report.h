@@ -32,6 +32,7 @@ struct BenchCaseResult {
     double frameMsMedian = 0.0;  // CPU wall time of a frame including glFinish
     double gpuMsTotal = 0.0;     // sum of the passes' GPU medians
     std::vector<PassTiming> passes;
+    ShadowDiagnostics shadowSetup;  // the last timed frame's (which warp ran; frame/frame_stats.h)
     AccuracyReport accuracy;
     std::vector<TemporalFigures> temporal;
     std::string error;  // a case that could not run (camera not found, bad view file)

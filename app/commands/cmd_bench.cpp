@@ -95,6 +95,7 @@ void timeCase(Renderer& renderer, const Scene& scene, const Settings& settings, 
         glFinish();
         frameMs.push_back(secondsSince(start) * 1e3);
         renderer.resolveTimings();
+        result.shadowSetup = stats.shadow;
         for (const PassStats& p : stats.passes) {
             if (p.name.rfind("setup", 0) == 0) setupUs.push_back(p.cpuMs * 1e3);
             if (!gpu.count(p.name)) order.push_back(p.name);

@@ -19,17 +19,12 @@ const char* visibleDepthSourceName(VisibleDepthSource source) {
     return "unknown";
 }
 
-std::string frameStatsJson(const FrameStats& s) {
+namespace {
+
+// The setup's scalars (the UI panels' readouts): which warp ran and why.
+nlohmann::json setupJson(const ShadowDiagnostics& d) {
     using nlohmann::json;
-    auto counts = [](const PassCounts& c) { 
-        return json{{"drawCalls", c.drawCalls},
-                    {"triangles", c.triangles},
-                    {"clustersVisible", c.clustersVisible},
-                    {"clustersCulled", c.clustersCulled}};
-    };
-    // The setup's scalars (the UI panels' readouts): which warp ran and why.
-    const ShadowDiagnostics& d = s.shadow;
-    const json shadowSetup = {
+    return {
         {"method", methodName(d.method)},
         {"focused", d.focused},
         {"nUsed", std::isfinite(d.nUsed) ? json(d.nUsed) : json("inf")},
@@ -41,6 +36,21 @@ std::string frameStatsJson(const FrameStats& s) {
         {"imageCheckSamples", d.imageCheckSamples},
         {"fallback", d.fallback},
     };
+}
+
+}  // namespace
+
+std::string shadowSetupJson(const ShadowDiagnostics& diagnostics) { return setupJson(diagnostics).dump(2); }
+
+std::string frameStatsJson(const FrameStats& s) {
+    using nlohmann::json;
+    auto counts = [](const PassCounts& c) { 
+        return json{{"drawCalls", c.drawCalls},
+                    {"triangles", c.triangles},
+                    {"clustersVisible", c.clustersVisible},
+                    {"clustersCulled", c.clustersCulled}};
+    };
+    const nlohmann::json shadowSetup = setupJson(s.shadow);
     json passes = json::array();
     for (const PassStats& p : s.passes) passes.push_back({{"name", p.name}, {"cpuMs", p.cpuMs}, {"gpuMs", p.gpuMs}});
     const json j = {

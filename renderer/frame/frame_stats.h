@@ -64,7 +64,10 @@ struct FrameStats {
 
 const char* visibleDepthSourceName(VisibleDepthSource source);
 
-// The frame's figures as JSON (2-space indented): counts, per-pass CPU/GPU ms, reuse flags.
+// The frame's figures as JSON (2-space indented): counts, per-pass CPU/GPU ms, reuse flags, the setup.
 std::string frameStatsJson(const FrameStats& stats);
+// The setup's readouts alone (frameStatsJson's "shadowSetup"): method, n used and n_opt, gamma, the
+// warp search's samples and estimated gain, the image check's loss and points, the fallback.
+std::string shadowSetupJson(const ShadowDiagnostics& diagnostics);
 
 }  // namespace shadowlab
