@@ -12,6 +12,7 @@
 #include "math/lispsm_search.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace shadowlab::detail {
@@ -35,8 +36,8 @@ constexpr std::size_t kMinImageSamples = 8;
 constexpr std::size_t kFewImageSamples = 32;
 constexpr double kFewImageSamplesTolerance = 0.85;
 
-// Where LiSPSM's searched warp fails the check, these shares of its u = ln(1 + k d) are tried in
-// turn before the uniform map (k = 0).
+// Where LiSPSM's searched warp fails the check, these shares of its u = ln(1 + k d) are scored and
+// the one with the lowest loss among those that pass is kept; none passing: the uniform map (k = 0).
 constexpr double kImageCheckWarpShares[] = {0.7, 0.45, 0.2};
 
 // Where the search's warp has under kImageRescueBelowShare of the closed form's u (none at all, or
@@ -76,5 +77,25 @@ private:
     FootprintQuantiles uniform_;
     bool active_ = false, measured_ = false;
 };
+
+// The warp whose u = ln(1 + k depth) is `share` of the warp k's (0 where depth <= 0).
+double warpAtShareOfU(double k, double depth, double share);
+
+// LiSPSM's warp family: the map matrix of a warp k = 1/n (k = 0: the uniform map).
+using WarpMatrix = std::function<glm::dmat4(double)>;
+
+// The warp after the image check of the searched warp k (whose matrix M is): k where it passes;
+// else the share of kImageCheckWarpShares of its u with the lowest loss among those that pass, else
+// 0 (the uniform map). A spot lighting too little of the image for the check gets
+// kStandInSpotWarpShare of u. M becomes the kept warp's matrix; diag gets the searched warp's loss.
+// `depth`: B's light-space z extent, over which u = ln(1 + k depth).
+double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool spot, const WarpMatrix& warped,
+                        glm::dmat4& M, ShadowDiagnostics& diag);
+
+// The image's rescue: where the search's warp k is far weaker than the closed form's kOpt or
+// none, the shares kImageRescueWarpShares of kOpt's u are scored and the lowest-loss one kept if it
+// promises kImageRescueTolerance and beats the warp in hand (k, M); else k and M stay.
+double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double depth, const WarpMatrix& warped,
+                        glm::dmat4& M, ShadowDiagnostics& diag);
 
 }  // namespace shadowlab::detail

@@ -9,7 +9,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace shadowlab::detail {
 namespace {
@@ -184,6 +187,45 @@ TEST(ImageCheck, RescuesAWarpTheCoarseGridRefused) {
         EXPECT_GT(check.lossOf(check.quantilesOf(coarseOnly.worldToShadowClip)), 0.85);
         EXPECT_LT(check.lossOf(check.quantilesOf(rescued.worldToShadowClip)), 0.2);
     }
+}
+
+}  // namespace
+}  // namespace shadowlab::detail
+
+namespace shadowlab::detail {
+namespace {
+
+// Where the searched warp fails the check, of the weaker warps that pass the one that loses least
+// is kept, not the first to pass. Here the warp family is a stand-in whose losses are known: maps
+// of the ground of chosen extents (a map of s times the uniform one's extent loses s at both
+// quantiles).
+TEST(ImageCheck, TheLadderKeepsThePassingShareThatLosesLeast) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = {0.3, -0.7, -0.4};
+    const ImageCheck check(v, sun, fineGridOnGround(v), orthoMap(sun, 120.0));
+    ASSERT_TRUE(check.active());
+    const double k = 1.0, depth = 100.0;
+    // share of u -> the extent of its map relative to the uniform one (its loss); the searched warp
+    // (share 1) fails, every weaker one passes, 0.45 loses least.
+    const std::vector<std::pair<double, double>> lossOfShare = {{1.0, 2.0}, {0.7, 1.03}, {0.45, 0.8}, {0.2, 0.95}};
+    ASSERT_EQ(std::size(kImageCheckWarpShares), 3u);
+    const WarpMatrix warped = [&](double kk) {
+        for (const auto& [share, loss] : lossOfShare)
+            if (std::abs(kk - warpAtShareOfU(k, depth, share)) <= 1e-12 * kk) return orthoMap(sun, 120.0 * loss);
+        return orthoMap(sun, 120.0);  // the uniform map (k = 0)
+    };
+    glm::dmat4 M = warped(k);
+    ShadowDiagnostics diag;
+    const double kept = imageCheckedWarp(check, k, depth, false, warped, M, diag);
+    EXPECT_NEAR(diag.imageCheckLoss, 2.0, 1e-9);  // the searched warp's
+    EXPECT_NEAR(kept, warpAtShareOfU(k, depth, 0.45), 1e-12);
+    EXPECT_NEAR(check.lossOf(check.quantilesOf(M)), 0.8, 1e-9);
+    // None passing: the uniform map.
+    const WarpMatrix losing = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 240.0 : 120.0); };
+    M = losing(k);
+    EXPECT_EQ(imageCheckedWarp(check, k, depth, false, losing, M, diag), 0.0);
+    EXPECT_NEAR(check.lossOf(check.quantilesOf(M)), 1.0, 1e-9);
 }
 
 }  // namespace
