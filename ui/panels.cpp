@@ -225,7 +225,8 @@ bool drawLispsmPanel(Settings& s, const ShadowDiagnostics& d, double autoVirtual
                                                          std::to_string(d.imageCheckSamples) + " px"
                                                    : std::string("not run"),
             "The searched warp's p95/p99 texel footprint over the pre-pass grid divided by the uniform map's "
-            "(> 1.05: it was weakened or replaced by the focused SSM).");
+            "(> 1.05: it was weakened or replaced by the focused SSM). Where the search kept (nearly) the "
+            "uniform map, the loss of the warp the image's rescue kept instead (1: the uniform map stayed).");
     readout("n_opt (real z_f)", formatNumber(d.nOptReal), "Thesis eq. 8.13 (9.2.5) evaluated with the real far plane.");
     readout("n_opt (virtual z_f)", formatNumber(d.nOptVirtual),
             "Thesis eq. 8.13 with the virtual far plane z_f (9.2.5); used unless n is overridden.");

@@ -112,20 +112,21 @@ double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double d
                         glm::dmat4& M, ShadowDiagnostics& diag) {
     if (!check.active() || check.uniform().samples < kFewImageSamples) return k;
     const double inHand = k > 0.0 ? check.lossOf(check.quantilesOf(M)) : 1.0;
-    double best = k, bestLoss = std::min(inHand, kImageRescueTolerance);
+    double best = k, bestLoss = inHand;
     for (const double share : kImageRescueWarpShares) {
         const double kk = warpAtShareOfU(kOpt, depth, share);
         if (!(kk > k) || !std::isfinite(kk)) continue;
         const glm::dmat4 candidate = warped(kk);
         const double loss = check.lossOf(check.quantilesOf(candidate));
-        if (loss < bestLoss) {
+        if (loss <= kImageRescueTolerance && loss < bestLoss) {
             best = kk;
             bestLoss = loss;
             M = candidate;
         }
     }
+    // The loss of the warp kept (1: the uniform map), so the read-out says what the image got.
     diag.imageCheckSamples = int(check.uniform().samples);
-    if (best != k) diag.imageCheckLoss = bestLoss;
+    diag.imageCheckLoss = bestLoss;
     return best;
 }
 

@@ -94,7 +94,8 @@ double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool sp
 
 // The image's rescue: where the search's warp k is far weaker than the closed form's kOpt or
 // none, the shares kImageRescueWarpShares of kOpt's u are scored and the lowest-loss one kept if it
-// promises kImageRescueTolerance and beats the warp in hand (k, M); else k and M stay.
+// promises kImageRescueTolerance and beats the warp in hand (k, M); else k and M stay. diag gets
+// the kept warp's loss (1 where the uniform map stays).
 double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double depth, const WarpMatrix& warped,
                         glm::dmat4& M, ShadowDiagnostics& diag);
 

@@ -179,6 +179,7 @@ TEST(ImageCheck, RescuesAWarpTheCoarseGridRefused) {
         ASSERT_TRUE(rescued.valid);
         EXPECT_LT(rescued.diagnostics.nUsed, 20.0);
         EXPECT_LT(rescued.diagnostics.imageCheckLoss, kImageRescueTolerance);
+        EXPECT_GT(rescued.diagnostics.imageCheckSamples, 300);
         // Over the image (the fine grid, against the focused SSM): the coarse grid's choice is
         // (nearly) the uniform map, the rescued warp a fraction of it.
         ShadowParams ssm = p;
@@ -194,6 +195,25 @@ TEST(ImageCheck, RescuesAWarpTheCoarseGridRefused) {
 
 namespace shadowlab::detail {
 namespace {
+
+// Where no share of the closed form's u promises enough, the rescue keeps the warp in hand and says
+// so: the loss of the uniform map is 1, not 0 (the read-out's "not better").
+TEST(ImageCheck, RescueFindingNothingKeepsTheUniformMapWithLossOne) {
+    const ViewFrustum v = groundView();
+    ShadowLight sun;
+    sun.direction = {0.3, -0.7, -0.4};
+    const ImageCheck check(v, sun, fineGridOnGround(v), orthoMap(sun, 120.0));
+    ASSERT_TRUE(check.active());
+    const WarpMatrix losing = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 0.95 * 120.0 : 120.0); };
+    glm::dmat4 M = losing(0.0);
+    ShadowDiagnostics diag;
+    EXPECT_EQ(imageRescuedWarp(check, 0.0, 1.0, 100.0, losing, M, diag), 0.0);  // 0.95 > 0.9: not enough
+    EXPECT_DOUBLE_EQ(diag.imageCheckLoss, 1.0);
+    EXPECT_EQ(diag.imageCheckSamples, int(check.uniform().samples));
+    const WarpMatrix gaining = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 0.5 * 120.0 : 120.0); };
+    EXPECT_GT(imageRescuedWarp(check, 0.0, 1.0, 100.0, gaining, M, diag), 0.0);
+    EXPECT_NEAR(diag.imageCheckLoss, 0.5, 1e-9);
+}
 
 // Where the searched warp fails the check, of the weaker warps that pass the one that loses least
 // is kept, not the first to pass. Here the warp family is a stand-in whose losses are known: maps
