@@ -46,6 +46,12 @@ std::vector<SurfacePoint> fineGridOnGround(const ViewFrustum& v) {
     return out;
 }
 
+ShadowLight obliqueSun() {
+    ShadowLight sun;
+    sun.direction = {0.3, -0.7, -0.4};
+    return sun;
+}
+
 // An orthographic map of the ground around the view, looking along the light.
 glm::dmat4 orthoMap(const ShadowLight& light, double halfSize) {
     const glm::dvec3 l = glm::normalize(light.direction);
@@ -55,8 +61,7 @@ glm::dmat4 orthoMap(const ShadowLight& light, double halfSize) {
 
 TEST(ImageCheck, ComparesQuantilesWithTheUniformMap) {
     const ViewFrustum v = groundView();
-    ShadowLight sun;
-    sun.direction = {0.3, -0.7, -0.4};
+    const ShadowLight sun = obliqueSun();
     const glm::dmat4 uniform = orthoMap(sun, 120.0);
     const ImageCheck check(v, sun, fineGridOnGround(v), uniform);
     ASSERT_TRUE(check.active());
@@ -98,8 +103,7 @@ TEST(ImageCheck, CountsGrazedReceivers) {
 // Too few receivers in the light: no check, and the caller is told so.
 TEST(ImageCheck, FewPointsInTheLightLeaveItInactive) {
     const ViewFrustum v = groundView();
-    ShadowLight sun;
-    sun.direction = {0.3, -0.7, -0.4};
+    const ShadowLight sun = obliqueSun();
     std::vector<SurfacePoint> fine = fineGridOnGround(v);
     fine.resize(kMinImageSamples - 1);
     const ImageCheck few(v, sun, fine, orthoMap(sun, 120.0));
@@ -114,8 +118,7 @@ TEST(ImageCheck, FewPointsInTheLightLeaveItInactive) {
 // the setup stays finite with them in the fine grid.
 TEST(ImageCheck, DegenerateReceiversAreSkipped) {
     const ViewFrustum v = groundView();
-    ShadowLight sun;
-    sun.direction = {0.3, -0.7, -0.4};
+    const ShadowLight sun = obliqueSun();
     std::vector<SurfacePoint> fine = fineGridOnGround(v);
     const std::size_t good = ImageCheck(v, sun, fine, orthoMap(sun, 120.0)).uniform().samples;
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
@@ -146,12 +149,6 @@ TEST(ImageCheck, DegenerateReceiversAreSkipped) {
         EXPECT_TRUE(std::isfinite(s.diagnostics.imageCheckLoss));
     }
 }
-
-}  // namespace
-}  // namespace shadowlab::detail
-
-namespace shadowlab::detail {
-namespace {
 
 // Where the warp search keeps the uniform map, or a warp far weaker than the closed form's, because
 // one coarse-grid receiver would lose under any stronger warp (a far wall the sun grazes: its
@@ -190,18 +187,11 @@ TEST(ImageCheck, RescuesAWarpTheCoarseGridRefused) {
     }
 }
 
-}  // namespace
-}  // namespace shadowlab::detail
-
-namespace shadowlab::detail {
-namespace {
-
 // Where no share of the closed form's u promises enough, the rescue keeps the warp in hand and says
 // so: the loss of the uniform map is 1, not 0 (the read-out's "not better").
 TEST(ImageCheck, RescueFindingNothingKeepsTheUniformMapWithLossOne) {
     const ViewFrustum v = groundView();
-    ShadowLight sun;
-    sun.direction = {0.3, -0.7, -0.4};
+    const ShadowLight sun = obliqueSun();
     const ImageCheck check(v, sun, fineGridOnGround(v), orthoMap(sun, 120.0));
     ASSERT_TRUE(check.active());
     const WarpMatrix losing = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 0.95 * 120.0 : 120.0); };
@@ -221,8 +211,7 @@ TEST(ImageCheck, RescueFindingNothingKeepsTheUniformMapWithLossOne) {
 // quantiles).
 TEST(ImageCheck, TheLadderKeepsThePassingShareThatLosesLeast) {
     const ViewFrustum v = groundView();
-    ShadowLight sun;
-    sun.direction = {0.3, -0.7, -0.4};
+    const ShadowLight sun = obliqueSun();
     const ImageCheck check(v, sun, fineGridOnGround(v), orthoMap(sun, 120.0));
     ASSERT_TRUE(check.active());
     const double k = 1.0, depth = 100.0;
