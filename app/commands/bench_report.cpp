@@ -51,7 +51,7 @@ json caseJson(const BenchCaseResult& c) {
         passes.push_back({{"name", p.name}, {"gpuMsMedian", p.gpuMsMedian}, {"gpuMsP95", p.gpuMsP95},
                           {"cpuMsMedian", p.cpuMsMedian}});
     j["passes"] = passes;
-    j["shadowSetup"] = json::parse(shadowSetupJson(c.shadowSetup));
+    j["shadowSetup"] = shadowSetupJson(c.shadowSetup);
     const AccuracyReport& a = c.accuracy;
     j["footprint"] = statsJson(a.footprint);
     j["bisectorFootprint"] = statsJson(a.bisector);

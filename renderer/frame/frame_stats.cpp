@@ -19,10 +19,8 @@ const char* visibleDepthSourceName(VisibleDepthSource source) {
     return "unknown";
 }
 
-namespace {
-
 // The setup's scalars (the UI panels' readouts): which warp ran and why.
-nlohmann::json setupJson(const ShadowDiagnostics& d) {
+nlohmann::json shadowSetupJson(const ShadowDiagnostics& d) {
     using nlohmann::json;
     return {
         {"method", methodName(d.method)},
@@ -38,10 +36,6 @@ nlohmann::json setupJson(const ShadowDiagnostics& d) {
     };
 }
 
-}  // namespace
-
-std::string shadowSetupJson(const ShadowDiagnostics& diagnostics) { return setupJson(diagnostics).dump(2); }
-
 std::string frameStatsJson(const FrameStats& s) {
     using nlohmann::json;
     auto counts = [](const PassCounts& c) { 
@@ -50,7 +44,7 @@ std::string frameStatsJson(const FrameStats& s) {
                     {"clustersVisible", c.clustersVisible},
                     {"clustersCulled", c.clustersCulled}};
     };
-    const nlohmann::json shadowSetup = setupJson(s.shadow);
+    const nlohmann::json shadowSetup = shadowSetupJson(s.shadow);
     json passes = json::array();
     for (const PassStats& p : s.passes) passes.push_back({{"name", p.name}, {"cpuMs", p.cpuMs}, {"gpuMs", p.gpuMs}});
     const json j = {

@@ -3,6 +3,8 @@
 // UI, by tests, by `render --stats FILE.json` and by the render benchmark (same keys).
 #include "math/shadow_setup.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -68,6 +70,6 @@ const char* visibleDepthSourceName(VisibleDepthSource source);
 std::string frameStatsJson(const FrameStats& stats);
 // The setup's readouts alone (frameStatsJson's "shadowSetup"): method, n used and n_opt, gamma, the
 // warp search's samples and estimated gain, the image check's loss and points, the fallback.
-std::string shadowSetupJson(const ShadowDiagnostics& diagnostics);
+nlohmann::json shadowSetupJson(const ShadowDiagnostics& diagnostics);
 
 }  // namespace shadowlab

@@ -108,11 +108,10 @@ double warpAtShareOfU(double k, double depth, double share) {
     return depth > 0.0 ? std::expm1(share * std::log1p(k * depth)) / depth : 0.0;
 }
 
-double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double depth, const WarpMatrix& warped,
-                        glm::dmat4& M, ShadowDiagnostics& diag) {
+double imageRescuedWarp(const ImageCheck& check, double k, double inHandLoss, double kOpt, double depth,
+                        const WarpMatrix& warped, glm::dmat4& M, ShadowDiagnostics& diag) {
     if (!check.active() || check.uniform().samples < kFewImageSamples) return k;
-    const double inHand = k > 0.0 ? check.lossOf(check.quantilesOf(M)) : 1.0;
-    double best = k, bestLoss = inHand;
+    double best = k, bestLoss = inHandLoss;
     for (const double share : kImageRescueWarpShares) {
         const double kk = warpAtShareOfU(kOpt, depth, share);
         if (!(kk > k) || !std::isfinite(kk)) continue;
@@ -131,7 +130,8 @@ double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double d
 }
 
 double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool spot, const WarpMatrix& warped, glm::dmat4& M,
-                        ShadowDiagnostics& diag) {
+                        ShadowDiagnostics& diag, double& keptLoss) {
+    keptLoss = 1.0;
     auto weaker = [&](double share) { return warpAtShareOfU(k, depth, share); };
     if (spot && check.tooFewSamples()) {
         // A spot lighting too little of the image for the check: the share of u the stand-ins
@@ -148,20 +148,25 @@ double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool sp
     const FootprintQuantiles searched = check.quantilesOf(M);
     diag.imageCheckLoss = check.lossOf(searched);
     diag.imageCheckSamples = int(check.uniform().samples);
-    if (check.accepts(searched)) return k;
+    if (check.accepts(searched)) {
+        keptLoss = diag.imageCheckLoss;
+        return k;
+    }
     double best = 0.0, bestLoss = kInf;
     for (const double share : kImageCheckWarpShares) {
         const double kk = weaker(share);
         if (!(kk > 0.0) || !std::isfinite(kk)) continue;
         const glm::dmat4 candidate = warped(kk);
         const FootprintQuantiles q = check.quantilesOf(candidate);
-        if (check.accepts(q) && check.lossOf(q) < bestLoss) {
+        const double loss = check.lossOf(q);
+        if (check.accepts(q) && loss < bestLoss) {
             best = kk;
-            bestLoss = check.lossOf(q);
+            bestLoss = loss;
             M = candidate;
         }
     }
     if (best == 0.0) M = warped(0.0);
+    else keptLoss = bestLoss;
     return best;
 }
 

@@ -87,16 +87,17 @@ using WarpMatrix = std::function<glm::dmat4(double)>;
 // The warp after the image check of the searched warp k (whose matrix M is): k where it passes;
 // else the share of kImageCheckWarpShares of its u with the lowest loss among those that pass, else
 // 0 (the uniform map). A spot lighting too little of the image for the check gets
-// kStandInSpotWarpShare of u. M becomes the kept warp's matrix; diag gets the searched warp's loss.
-// `depth`: B's light-space z extent, over which u = ln(1 + k depth).
+// kStandInSpotWarpShare of u. M becomes the kept warp's matrix; diag gets the searched warp's loss,
+// keptLoss the kept one's (1: the uniform map, or no check made). `depth`: B's light-space z extent,
+// over which u = ln(1 + k depth).
 double imageCheckedWarp(const ImageCheck& check, double k, double depth, bool spot, const WarpMatrix& warped,
-                        glm::dmat4& M, ShadowDiagnostics& diag);
+                        glm::dmat4& M, ShadowDiagnostics& diag, double& keptLoss);
 
 // The image's rescue: where the search's warp k is far weaker than the closed form's kOpt or
 // none, the shares kImageRescueWarpShares of kOpt's u are scored and the lowest-loss one kept if it
-// promises kImageRescueTolerance and beats the warp in hand (k, M); else k and M stay. diag gets
-// the kept warp's loss (1 where the uniform map stays).
-double imageRescuedWarp(const ImageCheck& check, double k, double kOpt, double depth, const WarpMatrix& warped,
-                        glm::dmat4& M, ShadowDiagnostics& diag);
+// promises kImageRescueTolerance and beats the warp in hand (k, M, its loss inHandLoss: 1 for the
+// uniform map); else k and M stay. diag gets the kept warp's loss.
+double imageRescuedWarp(const ImageCheck& check, double k, double inHandLoss, double kOpt, double depth,
+                        const WarpMatrix& warped, glm::dmat4& M, ShadowDiagnostics& diag);
 
 }  // namespace shadowlab::detail

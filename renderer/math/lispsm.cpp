@@ -192,8 +192,9 @@ glm::dmat4 lispsmMatrix(const LispsmInputs& in, const LispsmParams& params, bool
     const bool rescue = kOpt > 0.0 && !(warpAtShareOfU(kOpt, depth, kImageRescueBelowShare) < k);
     if (!params.overrideN && in.imageReceivers && (k > 0.0 || rescue)) {
         const ImageCheck check(view, light, *in.imageReceivers, uniformMatrix(ls, bv));
-        if (k > 0.0) k = imageCheckedWarp(check, k, depth, spot, warped, M, diag);
-        if (rescue) k = imageRescuedWarp(check, k, kOpt, depth, warped, M, diag);
+        double keptLoss = 1.0;  // the uniform map's
+        if (k > 0.0) k = imageCheckedWarp(check, k, depth, spot, warped, M, diag, keptLoss);
+        if (rescue) k = imageRescuedWarp(check, k, keptLoss, kOpt, depth, warped, M, diag);
     }
     diag.warp = k;
     diag.nUsed = k > 0.0 ? 1.0 / k : kInf;

@@ -197,11 +197,11 @@ TEST(ImageCheck, RescueFindingNothingKeepsTheUniformMapWithLossOne) {
     const WarpMatrix losing = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 0.95 * 120.0 : 120.0); };
     glm::dmat4 M = losing(0.0);
     ShadowDiagnostics diag;
-    EXPECT_EQ(imageRescuedWarp(check, 0.0, 1.0, 100.0, losing, M, diag), 0.0);  // 0.95 > 0.9: not enough
+    EXPECT_EQ(imageRescuedWarp(check, 0.0, 1.0, 1.0, 100.0, losing, M, diag), 0.0);  // 0.95 > 0.9: not enough
     EXPECT_DOUBLE_EQ(diag.imageCheckLoss, 1.0);
     EXPECT_EQ(diag.imageCheckSamples, int(check.uniform().samples));
     const WarpMatrix gaining = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 0.5 * 120.0 : 120.0); };
-    EXPECT_GT(imageRescuedWarp(check, 0.0, 1.0, 100.0, gaining, M, diag), 0.0);
+    EXPECT_GT(imageRescuedWarp(check, 0.0, 1.0, 1.0, 100.0, gaining, M, diag), 0.0);
     EXPECT_NEAR(diag.imageCheckLoss, 0.5, 1e-9);
 }
 
@@ -226,14 +226,15 @@ TEST(ImageCheck, TheLadderKeepsThePassingShareThatLosesLeast) {
     };
     glm::dmat4 M = warped(k);
     ShadowDiagnostics diag;
-    const double kept = imageCheckedWarp(check, k, depth, false, warped, M, diag);
+    double keptLoss = 0.0;
+    const double kept = imageCheckedWarp(check, k, depth, false, warped, M, diag, keptLoss);
     EXPECT_NEAR(diag.imageCheckLoss, 2.0, 1e-9);  // the searched warp's
     EXPECT_NEAR(kept, warpAtShareOfU(k, depth, 0.45), 1e-12);
     EXPECT_NEAR(check.lossOf(check.quantilesOf(M)), 0.8, 1e-9);
     // None passing: the uniform map.
     const WarpMatrix losing = [&](double kk) { return orthoMap(sun, kk > 0.0 ? 240.0 : 120.0); };
     M = losing(k);
-    EXPECT_EQ(imageCheckedWarp(check, k, depth, false, losing, M, diag), 0.0);
+    EXPECT_EQ(imageCheckedWarp(check, k, depth, false, losing, M, diag, keptLoss), 0.0);
     EXPECT_NEAR(check.lossOf(check.quantilesOf(M)), 1.0, 1e-9);
 }
 
